@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs everything geompm needs on Debian 12 (idempotent, non-interactive).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build ccache pkg-config
+  libeigen3-dev          # small dense tensors and the sparse matrix type
+  libsuitesparse-dev     # UMFPACK sparse direct solver
+  libyaml-cpp-dev        # model files (YAML, with line numbers for errors)
+  libmuparser-dev        # expressions of x, y, z, t in model files
+  libcli11-dev           # command line
+  libfmt-dev             # formatting
+  libgmsh-dev            # Gmsh .msh import and unstructured mesh generation
+  libgd-dev              # PNG plots of histories
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3-meshio         # independent VTU reader used by the output test
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

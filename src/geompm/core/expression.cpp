@@ -1,0 +1,58 @@
+#include "geompm/core/expression.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace geompm {
+
+// muparser binds variables by address, so each Expression owns its parser and variables.
+// Evaluation mutates those variables: an Expression is not shared between threads.
+struct Expression::Impl {
+  mu::Parser parser;
+  double x = 0, y = 0, z = 0, t = 0;
+
+  explicit Impl(const std::string& text) {
+    parser.DefineVar("x", &x);
+    parser.DefineVar("y", &y);
+    parser.DefineVar("z", &z);
+    parser.DefineVar("t", &t);
+    parser.DefineConst("pi", M_PI);
+    parser.DefineConst("e", M_E);
+    parser.SetExpr(text);
+    parser.Eval();  // compiles now, so a bad expression fails while the model is read
+  }
+};
+
+Expression::Expression() : Expression("0") {}
+
+Expression::Expression(const std::string& text) : text_(text) {
+  try {
+    impl_ = std::make_unique<Impl>(text);
+  } catch (const mu::Parser::exception_type& e) {
+    throw std::invalid_argument("invalid expression '" + text + "': " + e.GetMsg());
+  }
+}
+
+Expression::Expression(const Expression& other) : Expression(other.text_) {}
+
+Expression& Expression::operator=(const Expression& other) {
+  if (this != &other) {
+    text_ = other.text_;
+    impl_ = std::make_unique<Impl>(other.text_);
+  }
+  return *this;
+}
+
+Expression::~Expression() = default;
+
+double Expression::operator()(double x, double y, double z, double t) const {
+  impl_->x = x;
+  impl_->y = y;
+  impl_->z = z;
+  impl_->t = t;
+  return impl_->parser.Eval();
+}
+
+}  // namespace geompm

@@ -1,0 +1,61 @@
+// Fourth-order tensors as 9x9 matrices (entry (3i+j, 3k+l) holds T_ijkl) and the functions of
+// symmetric tensors that finite-strain kinematics needs: the logarithm and exponential, and the
+// derivative of an isotropic tensor function (Daleckii-Krein formula, docs/theory.md eq. 3.6).
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+
+#include "geompm/core/types.hpp"
+
+namespace geompm {
+
+using Tensor4 = Eigen::Matrix<double, 9, 9>;
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+
+inline int pair_index(int i, int j) { return 3 * i + j; }
+
+/// The 9-vector of a 3x3 matrix, row-major (entry 3i+j holds A_ij).
+inline Vec9 flatten(const Mat3& a) {
+  Vec9 v;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) v(3 * i + j) = a(i, j);
+  return v;
+}
+inline Mat3 unflatten(const Vec9& v) {
+  Mat3 a;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a(i, j) = v(3 * i + j);
+  return a;
+}
+
+/// Symmetric fourth-order identity: I_ijkl = (d_ik d_jl + d_il d_jk) / 2.
+Tensor4 symmetric_identity4();
+/// I (x) I: d_ij d_kl.
+Tensor4 identity_dyad_identity4();
+/// Isotropic elasticity: lambda I(x)I + 2 mu I_sym.
+Tensor4 isotropic_elasticity4(double lambda, double mu);
+
+/// Spectral decomposition of a symmetric matrix: a = Q diag(values) Q^T.
+struct SymmetricEigen {
+  Vec3 values;
+  Mat3 vectors;  // columns are the eigenvectors
+};
+SymmetricEigen symmetric_eigen(const Mat3& a);
+
+/// f(A) = Q diag(f(values)) Q^T for symmetric A.
+Mat3 isotropic_function(const SymmetricEigen& e, const std::function<double(double)>& f);
+
+/// Derivative d f(A) / dA of an isotropic tensor function of a symmetric A, as a Tensor4 acting
+/// on symmetric increments: Q (Theta o (Q^T dA Q)) Q^T with Theta_ab the divided differences
+/// (f(x_a) - f(x_b)) / (x_a - x_b), and f'(x_a) where the eigenvalues coincide. Valid for
+/// repeated eigenvalues (the limit is taken, not avoided).
+Tensor4 isotropic_function_derivative(const SymmetricEigen& e,
+                                      const std::function<double(double)>& f,
+                                      const std::function<double(double)>& df);
+
+/// Matrix logarithm and exponential of a symmetric matrix (positive definite for the log).
+Mat3 symmetric_log(const Mat3& a);
+Mat3 symmetric_exp(const Mat3& a);
+
+}  // namespace geompm

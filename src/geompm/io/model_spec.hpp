@@ -1,0 +1,177 @@
+// The model as read from a model file, before anything is built: plain data, validated by the
+// reader (types, ranges, names that refer to each other). analysis/ builds the simulation from
+// it. Each part keeps where it came from (SourceLocation) so that errors found later, while the
+// mesh is built or points are seeded, still name the file, key path and line.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geompm/core/error.hpp"
+#include "geompm/core/types.hpp"
+#include "geompm/mesh/structured_mesh.hpp"
+
+namespace geompm::spec {
+
+struct Mesh {
+  std::optional<StructuredMeshSpec> generate;  // either generate ...
+  std::string file;                             // ... or a Gmsh .msh file (absolute path)
+  SourceLocation source;
+};
+
+struct Material {
+  std::string name;
+  std::string model;                          // registered name, e.g. "linear_elastic"
+  std::map<std::string, double> parameters;   // E, nu, density, ...
+  SourceLocation source;
+};
+
+/// A part of space: selects cells of a mesh region, or points by position.
+struct Region {
+  enum class Kind { All, Group, Box, Polygon, Circle };
+  Kind kind = Kind::All;
+  std::string group;            // Group: a region (cell group) of the mesh
+  Vec3 min = Vec3::Zero();      // Box
+  Vec3 max = Vec3::Zero();
+  std::vector<Vec3> polygon;    // Polygon (2D), counter-clockwise or clockwise
+  Vec3 center = Vec3::Zero();   // Circle (2D) or sphere (3D)
+  double radius = 0.0;
+  SourceLocation source;
+};
+
+struct Body {
+  std::string name;
+  std::string material;
+  Region region;
+  int points_per_cell = 4;
+  std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
+  SourceLocation source;
+};
+
+/// Named set of material points (e.g. the head of a pile), for prescribed motion, loads and
+/// histories. Selected by region among the points of `body` (all bodies if empty).
+struct PointSet {
+  std::string name;
+  std::string body;
+  Region region;
+  SourceLocation source;
+};
+
+/// Fixity of grid nodes: on a named boundary of the mesh, or on a plane x_axis = value.
+struct Fixity {
+  std::string boundary;                 // empty when a plane is given
+  int plane_axis = -1;                  // 0, 1, 2
+  double plane_value = 0.0;
+  bool normal_only = false;             // "normal": only the component normal to the boundary
+  std::array<bool, 3> components = {false, false, false};  // when not normal_only
+  SourceLocation source;
+};
+
+/// Prescribed motion of a point set: each component an expression of t, or empty = free.
+struct PrescribedMotion {
+  std::string point_set;
+  bool velocity = false;  // false: the expressions give the displacement since phase start
+  std::array<std::string, 3> components;  // "" = free
+  SourceLocation source;
+};
+
+/// A force on a point set (load control), shared among its points in proportion to mass.
+struct PointSetLoad {
+  std::string point_set;
+  std::array<std::string, 3> components = {"0", "0", "0"};  // expressions of t (phase time)
+  SourceLocation source;
+};
+
+struct Gravity {
+  Vec3 acceleration = Vec3::Zero();
+  bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
+};
+
+struct TimeStepping {
+  double initial = 0.0;
+  double min = 0.0;
+  double max = 0.0;
+  double growth = 1.5;      // factor after an easy step
+  double cutback = 0.5;     // factor after a failed step
+  int easy_iterations = 4;  // a step with at most this many iterations is easy
+};
+
+struct Newton {
+  int max_iterations = 15;
+  double residual_tolerance = 1e-8;      // relative to the force scale
+  double displacement_tolerance = 1e-8;  // relative to the step's displacement increment
+};
+
+struct Dynamics {
+  bool quasi_static = true;
+  double beta = 0.25;  // Newmark; trapezoidal rule by default (no numerical damping)
+  double gamma = 0.5;
+};
+
+struct Phase {
+  std::string name;
+  double duration = 1.0;
+  TimeStepping time_step;
+  Dynamics dynamics;
+  Newton newton;
+  std::optional<Gravity> gravity;
+  std::vector<Fixity> fixities;
+  std::vector<PrescribedMotion> motions;
+  std::vector<PointSetLoad> loads;
+  SourceLocation source;
+};
+
+/// One column of the history CSV.
+struct History {
+  std::string name;      // column name; defaults to quantity[_target][_component]
+  std::string quantity;  // reaction | displacement | velocity | position | kinetic_energy |
+                         // strain_energy | newton_iterations | time_step | load
+  std::string boundary;  // reaction on a boundary
+  std::string point_set; // reaction, displacement, velocity, position, load of a point set
+  int component = -1;    // 0, 1, 2; -1 for scalars
+  SourceLocation source;
+};
+
+struct Plot {
+  std::string file;                // PNG, relative to the output directory
+  std::string x;                   // history column
+  std::vector<std::string> y;      // history columns
+  double x_scale = 1.0, y_scale = 1.0;  // e.g. -1 to plot settlement downward as positive
+  std::string title;
+  SourceLocation source;
+};
+
+struct Output {
+  int vtk_every = 1;          // write ParaView files every n converged steps (0 = never)
+  bool vtk_grid = true;       // also write the grid with nodal fields
+  std::vector<History> histories;
+  std::vector<Plot> plots;
+};
+
+enum class LostPointPolicy { Stop, Remove };
+
+struct Numerics {
+  double empty_cell_stiffness = 1e-6;  // relative to the largest Young's modulus
+  int buffer_layers = 1;               // layers of empty cells kept active around the body
+  LostPointPolicy lost_points = LostPointPolicy::Stop;
+  std::string linear_solver = "umfpack";
+};
+
+struct Model {
+  std::string file;      // the model file, as given
+  std::string directory; // its directory, for relative paths
+  std::string title;
+  Kinematics kinematics = Kinematics::PlaneStrain;
+  Mesh mesh;
+  std::vector<Material> materials;
+  std::vector<Body> bodies;
+  std::vector<PointSet> point_sets;
+  std::vector<Phase> phases;
+  Output output;
+  Numerics numerics;
+};
+
+}  // namespace geompm::spec

@@ -1,0 +1,41 @@
+// ParaView output: binary VTK XML unstructured grids (.vtu, appended raw data, UInt64 headers)
+// for the material points (as vertices) and for the background mesh, and a .pvd collection per
+// series that lists every file with its time. Every file is written to a temporary name and
+// renamed, so a file on disk is always complete, also when a run stops.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geompm/io/field_set.hpp"
+#include "geompm/mesh/mesh.hpp"
+
+namespace geompm {
+
+/// Writes points (positions) as VTK_VERTEX cells with point data `fields`.
+void write_vtu_points(const std::filesystem::path& file, const std::vector<Vec3>& positions,
+                      const FieldSet& fields);
+
+/// Writes the mesh (node positions `nodes`, which may differ from mesh.nodes) with node data and
+/// cell data. Tri6 is written as VTK_QUADRATIC_TRIANGLE.
+void write_vtu_mesh(const std::filesystem::path& file, const Mesh& mesh,
+                    const std::vector<Vec3>& nodes, const FieldSet& node_fields,
+                    const FieldSet& cell_fields);
+
+/// A time series: each add() records (time, file relative to the .pvd) and rewrites the .pvd.
+class PvdSeries {
+ public:
+  explicit PvdSeries(std::filesystem::path pvd_file);
+  void add(double time, const std::string& relative_file);
+  const std::filesystem::path& path() const { return pvd_file_; }
+
+ private:
+  std::filesystem::path pvd_file_;
+  std::vector<std::pair<double, std::string>> entries_;
+};
+
+/// Writes `content` to `file` through a temporary file and a rename (never a partial file).
+void write_file_atomically(const std::filesystem::path& file, const std::string& content);
+
+}  // namespace geompm

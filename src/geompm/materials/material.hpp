@@ -1,0 +1,54 @@
+// The material interface: a stress update and its algorithmic tangent, nothing else.
+//
+// Every material works in logarithmic (Hencky) strain and Kirchhoff stress (docs/theory.md §3):
+// the kinematics (physics/finite_strain.hpp) forms the trial elastic strain
+// eps_tr = 1/2 ln(b_e^tr), b_e^tr = dF b_e^n dF^T, and the material returns the Kirchhoff
+// stress tau, the updated elastic strain and history, and the consistent tangent
+// D = d tau / d eps_tr. The kinematics turns that into the spatial tangent of the updated
+// Lagrangian Newton step, so a material knows nothing of grids, rotations or large strains:
+// rotations are handled exactly (objectivity) and a small-strain return mapping carries over.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geompm/core/tensor.hpp"
+#include "geompm/points/material_points.hpp"
+
+namespace geompm {
+
+struct StressUpdate {
+  Mat3 kirchhoff;            // tau = J sigma
+  Mat3 elastic_strain;       // 1/2 ln(b_e) after the update (= eps_tr when elastic)
+  InternalVariables internal{};
+  Tensor4 tangent;           // d tau / d eps_tr, index (3i+j, 3k+l)
+};
+
+class Material {
+ public:
+  virtual ~Material() = default;
+
+  virtual void update(const Mat3& trial_elastic_strain, const InternalVariables& internal_n,
+                      StressUpdate& out) const = 0;
+
+  /// Mass density in the reference state.
+  virtual double density() const = 0;
+  /// A Young's modulus that stands for the material's stiffness (empty-cell stiffness scale).
+  virtual double reference_modulus() const = 0;
+  /// Stored energy per unit reference volume at elastic strain eps (for energy histories).
+  virtual double strain_energy(const Mat3& elastic_strain) const = 0;
+  virtual const char* model_name() const = 0;
+};
+
+using ParameterMap = std::map<std::string, double>;
+
+/// Creates the material registered as `model`. Throws ParameterError naming the offending key:
+/// "model" for an unknown model, or the parameter that is missing, unknown or out of range.
+std::unique_ptr<Material> create_material(const std::string& model, const ParameterMap& parameters);
+
+/// Names of the registered material models.
+std::vector<std::string> material_models();
+
+}  // namespace geompm

@@ -1,0 +1,42 @@
+#include "geompm/materials/neo_hookean.hpp"
+
+#include <cmath>
+
+#include "geompm/materials/parameters.hpp"
+
+namespace geompm {
+
+NeoHookean::NeoHookean(double E, double nu, double density)
+    : E_(E), density_(density), lambda_(lame_lambda(E, nu)), mu_(shear_modulus(E, nu)) {}
+
+std::unique_ptr<Material> NeoHookean::create(const ParameterMap& p) {
+  ParameterReader r("neo_hookean", p, {"E", "nu", "density"});
+  return std::make_unique<NeoHookean>(ParameterReader::positive("E", r.required("E")),
+                                      ParameterReader::poisson_ratio("nu", r.required("nu")),
+                                      ParameterReader::non_negative("density",
+                                                                    r.optional("density", 0)));
+}
+
+void NeoHookean::update(const Mat3& eps, const InternalVariables& internal_n,
+                        StressUpdate& out) const {
+  const SymmetricEigen e = symmetric_eigen(eps);
+  const auto exp2 = [](double x) { return std::exp(2.0 * x); };
+  const Mat3 b = isotropic_function(e, exp2);
+  out.kirchhoff = mu_ * (b - Mat3::Identity()) + lambda_ * eps.trace() * Mat3::Identity();
+  out.elastic_strain = eps;
+  out.internal = internal_n;
+  // d tau / d eps = mu d exp(2 eps)/d eps + lambda I (x) I
+  out.tangent = mu_ * isotropic_function_derivative(e, exp2, [](double x) {
+                  return 2.0 * std::exp(2.0 * x);
+                }) +
+                lambda_ * identity_dyad_identity4();
+}
+
+double NeoHookean::strain_energy(const Mat3& eps) const {
+  // W = mu/2 (tr b - 3) - mu ln J + lambda/2 (ln J)^2, ln J = tr eps
+  const Mat3 b = symmetric_exp(2.0 * eps);
+  const double lnJ = eps.trace();
+  return 0.5 * mu_ * (b.trace() - 3.0) - mu_ * lnJ + 0.5 * lambda_ * lnJ * lnJ;
+}
+
+}  // namespace geompm

@@ -1,0 +1,90 @@
+#include "geompm/points/material_points.hpp"
+
+#include <numeric>
+
+namespace geompm {
+
+Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x, double vol,
+                          double density, Index cell_index, const Vec3& xi) {
+  const Index next_id = id.empty() ? 0 : id.back() + 1;
+  id.push_back(next_id);
+  body.push_back(body_index);
+  material.push_back(material_index);
+  sets.push_back(0);
+  position.push_back(x);
+  initial_position.push_back(x);
+  displacement.push_back(Vec3::Zero());
+  velocity.push_back(Vec3::Zero());
+  acceleration.push_back(Vec3::Zero());
+  mass.push_back(vol * density);
+  volume.push_back(vol);
+  initial_volume.push_back(vol);
+  stress.push_back(Mat3::Zero());
+  deformation_gradient.push_back(Mat3::Identity());
+  elastic_left_cauchy_green.push_back(Mat3::Identity());
+  internal.push_back(InternalVariables{});
+  cell.push_back(cell_index);
+  local.push_back(xi);
+  return size() - 1;
+}
+
+namespace {
+
+// Applies the same reordering (or filtering) to every field, so no field is ever forgotten.
+template <class Fn>
+void for_each_field(MaterialPoints& p, Fn&& fn) {
+  fn(p.id);
+  fn(p.body);
+  fn(p.material);
+  fn(p.sets);
+  fn(p.position);
+  fn(p.initial_position);
+  fn(p.displacement);
+  fn(p.velocity);
+  fn(p.acceleration);
+  fn(p.mass);
+  fn(p.volume);
+  fn(p.initial_volume);
+  fn(p.stress);
+  fn(p.deformation_gradient);
+  fn(p.elastic_left_cauchy_green);
+  fn(p.internal);
+  fn(p.cell);
+  fn(p.local);
+}
+
+}  // namespace
+
+void MaterialPoints::remove(const std::vector<char>& flag) {
+  for_each_field(*this, [&](auto& field) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < field.size(); ++i)
+      if (!flag[i]) field[out++] = field[i];
+    field.resize(out);
+  });
+}
+
+void MaterialPoints::sort_by_cell() {
+  std::vector<Index> order(cell.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](Index a, Index b) { return cell[a] < cell[b]; });
+  bool sorted = true;
+  for (std::size_t i = 0; i < order.size(); ++i) sorted = sorted && order[i] == Index(i);
+  if (sorted) return;
+  for_each_field(*this, [&](auto& field) {
+    auto copy = field;
+    for (std::size_t i = 0; i < order.size(); ++i) field[i] = copy[order[i]];
+  });
+}
+
+double MaterialPoints::bytes_per_point() const {
+  if (id.empty()) return 0.0;
+  double bytes = 0;
+  for_each_field(const_cast<MaterialPoints&>(*this), [&](auto& field) {
+    bytes += double(field.capacity()) * sizeof(typename std::decay_t<decltype(field)>::value_type);
+  });
+  return bytes / double(id.size());
+}
+
+}  // namespace geompm
