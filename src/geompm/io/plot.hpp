@@ -2,6 +2,7 @@
 // a legend. For the curves an engineer looks at first: load against displacement, energy in time.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,5 +23,8 @@ struct PlotRequest {
 
 /// Reads the CSV and writes `png` (atomically). Throws InputError for a missing file or column.
 void plot_history(const PlotRequest& request, const std::filesystem::path& png);
+
+/// The colour (0xRRGGBB) of the curve of the i-th y column, also shown in the legend.
+unsigned plot_line_colour(std::size_t column_index);
 
 }  // namespace geompm

@@ -33,6 +33,7 @@ class PointLocator {
   Vec3 bucket_size_;
   std::vector<Index> bucket_start_;  // CSR: bucket -> candidate cells
   std::vector<Index> bucket_cells_;
+  std::vector<double> cell_boxes_;      // per cell: padded lower[dim], upper[dim], tested first
   std::vector<Index> neighbour_start_;  // CSR: cell -> cells sharing a node
   std::vector<Index> neighbour_cells_;
 };

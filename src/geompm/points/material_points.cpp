@@ -14,6 +14,7 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
   position.push_back(x);
   initial_position.push_back(x);
   displacement.push_back(Vec3::Zero());
+  phase_displacement.push_back(Vec3::Zero());
   velocity.push_back(Vec3::Zero());
   acceleration.push_back(Vec3::Zero());
   mass.push_back(vol * density);
@@ -40,6 +41,7 @@ void for_each_field(MaterialPoints& p, Fn&& fn) {
   fn(p.position);
   fn(p.initial_position);
   fn(p.displacement);
+  fn(p.phase_displacement);
   fn(p.velocity);
   fn(p.acceleration);
   fn(p.mass);

@@ -24,6 +24,7 @@ struct MaterialPoints {
   std::vector<Vec3> position;
   std::vector<Vec3> initial_position;
   std::vector<Vec3> displacement;     // total, since the point was seeded
+  std::vector<Vec3> phase_displacement;  // since the start of the current analysis phase
   std::vector<Vec3> velocity;
   std::vector<Vec3> acceleration;
   std::vector<double> mass;

@@ -1,0 +1,114 @@
+#include "geompm/analysis/histories.hpp"
+
+#include "geompm/core/tensor.hpp"
+
+namespace geompm {
+
+HistoryRecorder::HistoryRecorder(const Model& model) : histories_(model.spec.output.histories) {
+  for (const auto& h : histories_)
+    set_bits_.push_back(h.point_set.empty() ? -1 : model.point_set_bit(h.point_set));
+}
+
+std::vector<std::string> HistoryRecorder::columns() const {
+  std::vector<std::string> c = {"time", "step"};
+  for (const auto& h : histories_) c.push_back(h.name);
+  return c;
+}
+
+double kinetic_energy(const Model& model) {
+  const auto& p = model.points;
+  double e = 0.0;
+  for (Index i = 0; i < p.size(); ++i) e += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+  return e;
+}
+
+double strain_energy(const Model& model) {
+  // Stored energy W(eps_e) per unit reference volume, eps_e = 1/2 ln(b_e).
+  const auto& p = model.points;
+  double e = 0.0;
+  for (Index i = 0; i < p.size(); ++i) {
+    const Mat3 eps = 0.5 * symmetric_log(p.elastic_left_cauchy_green[i]);
+    e += p.initial_volume[i] * model.materials[p.material[i]]->strain_energy(eps);
+  }
+  return e;
+}
+
+double HistoryRecorder::point_set_mean(const Model& model, int set, int component,
+                                       const std::vector<Vec3>& field) const {
+  // Mass-weighted mean over the set (volume-weighted for a weightless set).
+  const auto& p = model.points;
+  double sum = 0.0, weight = 0.0;
+  for (Index i = 0; i < p.size(); ++i)
+    if (p.sets[i] >> set & 1u) {
+      const double w = p.mass[i] > 0 ? p.mass[i] : p.volume[i];
+      sum += w * field[i](component);
+      weight += w;
+    }
+  return weight > 0 ? sum / weight : 0.0;
+}
+
+std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
+  std::vector<double> v = {0.0, 0.0};
+  for (std::size_t k = 0; k < histories_.size(); ++k) {
+    const auto& h = histories_[k];
+    if (h.quantity == "displacement")
+      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.displacement));
+    else if (h.quantity == "velocity")
+      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.velocity));
+    else if (h.quantity == "position")
+      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.position));
+    else if (h.quantity == "kinetic_energy")
+      v.push_back(kinetic_energy(model));
+    else if (h.quantity == "strain_energy")
+      v.push_back(strain_energy(model));
+    else
+      v.push_back(0.0);
+  }
+  return v;
+}
+
+std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem& grid,
+                                            const StepResult& step, const PhaseContext& phase,
+                                            double phase_time, double time, int step_number,
+                                            double dt) const {
+  std::vector<double> v = {time, double(step_number)};
+  const int dim = grid.dim();
+  for (std::size_t k = 0; k < histories_.size(); ++k) {
+    const auto& h = histories_[k];
+    double value = 0.0;
+    if (h.quantity == "reaction") {
+      // Sum of the reactions at the constrained unknowns of the boundary or driven set.
+      auto add = [&](Index active_node) {
+        const Index d = active_node * dim + h.component;
+        if (step.constrained[d]) value += step.reaction(d);
+      };
+      if (!h.boundary.empty()) {
+        for (Index node : model.mesh.node_groups.at(h.boundary))
+          if (grid.node_to_active()[node] >= 0) add(grid.node_to_active()[node]);
+      } else if (auto it = step.set_reactions.find(set_bits_[k]); it != step.set_reactions.end()) {
+        value = it->second(h.component);
+      }
+    } else if (h.quantity == "displacement") {
+      value = point_set_mean(model, set_bits_[k], h.component, model.points.displacement);
+    } else if (h.quantity == "velocity") {
+      value = point_set_mean(model, set_bits_[k], h.component, model.points.velocity);
+    } else if (h.quantity == "position") {
+      value = point_set_mean(model, set_bits_[k], h.component, model.points.position);
+    } else if (h.quantity == "load") {
+      for (const auto& load : phase.loads)
+        if (load.set == set_bits_[k]) value += phase.load(load, phase_time)(h.component);
+    } else if (h.quantity == "kinetic_energy") {
+      value = kinetic_energy(model);
+    } else if (h.quantity == "strain_energy") {
+      value = strain_energy(model);
+    } else if (h.quantity == "newton_iterations") {
+      value = step.newton.iterations;
+    } else if (h.quantity == "time_step") {
+      value = dt;
+    }
+    v.push_back(value);
+  }
+  return v;
+}
+
+}  // namespace geompm

@@ -1,0 +1,297 @@
+#include "geompm/analysis/model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "geompm/core/expression.hpp"
+#include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/gmsh_import.hpp"
+#include "geompm/mesh/structured_mesh.hpp"
+#include "geompm/points/seeding.hpp"
+
+namespace geompm {
+
+std::vector<const Material*> Model::material_pointers() const {
+  std::vector<const Material*> out;
+  for (const auto& m : materials) out.push_back(m.get());
+  return out;
+}
+
+int Model::point_set_bit(const std::string& name) const {
+  for (std::size_t k = 0; k < point_set_names.size(); ++k)
+    if (point_set_names[k] == name) return static_cast<int>(k);
+  return -1;
+}
+
+double Model::largest_modulus() const {
+  double E = 0.0;
+  for (const auto& m : materials) E = std::max(E, m->reference_modulus());
+  return E;
+}
+
+namespace {
+
+// Whether a region holds the position x (or, for a group region, the cell).
+class RegionTest {
+ public:
+  RegionTest(const spec::Region& region, const Mesh& mesh, int dim)
+      : region_(region), dim_(dim) {
+    if (region.kind == spec::Region::Kind::Group) {
+      auto it = mesh.cell_groups.find(region.group);
+      if (it == mesh.cell_groups.end()) {
+        std::string known;
+        for (const auto& [name, cells] : mesh.cell_groups) known += (known.empty() ? "" : ", ") + name;
+        throw InputError(region.source, fmt::format("the mesh has no region '{}'; its regions are: {}",
+                                                    region.group, known.empty() ? "(none)" : known));
+      }
+      cells_ = &it->second;
+    }
+  }
+
+  bool contains(const Vec3& x, Index cell) const {
+    using K = spec::Region::Kind;
+    switch (region_.kind) {
+      case K::All:
+        return true;
+      case K::Group:
+        return std::binary_search(cells_->begin(), cells_->end(), cell);
+      case K::Box:
+        for (int d = 0; d < dim_; ++d)
+          if (x(d) < region_.min(d) || x(d) > region_.max(d)) return false;
+        return true;
+      case K::Circle:
+        return (x - region_.center).head(dim_).norm() <= region_.radius;
+      case K::Polygon:
+        return inside_polygon(x);
+    }
+    return false;
+  }
+
+  /// Bounding box of a geometric region (nullopt for All and Group).
+  std::optional<std::pair<Vec3, Vec3>> bounds() const {
+    using K = spec::Region::Kind;
+    if (region_.kind == K::Box) return std::make_pair(region_.min, region_.max);
+    if (region_.kind == K::Circle)
+      return std::make_pair(Vec3(region_.center.array() - region_.radius),
+                            Vec3(region_.center.array() + region_.radius));
+    if (region_.kind == K::Polygon) {
+      Vec3 lo = region_.polygon.front(), hi = lo;
+      for (const auto& v : region_.polygon) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
+      return std::make_pair(lo, hi);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  bool inside_polygon(const Vec3& x) const {
+    // Even-odd rule.
+    bool inside = false;
+    const auto& v = region_.polygon;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+      if ((v[i].y() > x.y()) != (v[j].y() > x.y()) &&
+          x.x() < (v[j].x() - v[i].x()) * (x.y() - v[i].y()) / (v[j].y() - v[i].y()) + v[i].x())
+        inside = !inside;
+    }
+    return inside;
+  }
+
+  const spec::Region& region_;
+  int dim_;
+  const std::vector<Index>* cells_ = nullptr;
+};
+
+Mesh make_mesh(const spec::Model& spec) {
+  const int dim = spatial_dimension(spec.kinematics);
+  Mesh mesh;
+  if (spec.mesh.generate) {
+    try {
+      mesh = generate_structured_mesh(*spec.mesh.generate);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(spec.mesh.source, e.what());
+    }
+  } else {
+    mesh = read_gmsh_mesh(spec.mesh.file, dim);
+  }
+  if (mesh.dim() != dim)
+    throw InputError(spec.mesh.source,
+                     fmt::format("the mesh is {}D ({} cells) but the analysis is {}", mesh.dim(),
+                                 to_string(mesh.cell_type), to_string(spec.kinematics)));
+  validate_mesh(mesh, spec.mesh.source.describe());
+  if (spec.kinematics == Kinematics::Axisymmetric) {
+    for (Index n = 0; n < mesh.num_nodes(); ++n)
+      if (mesh.nodes[n].x() < -1e-12)
+        throw InputError(spec.mesh.source,
+                         fmt::format("axisymmetric meshes must lie in x >= 0 (x is the radius); "
+                                     "node {} is at x = {}",
+                                     n, mesh.nodes[n].x()));
+  }
+  return mesh;
+}
+
+}  // namespace
+
+std::unique_ptr<Model> build_model(const spec::Model& spec) {
+  auto model = std::make_unique<Model>();
+  model->spec = spec;
+  model->mesh = make_mesh(spec);
+  const Mesh& mesh = model->mesh;
+  const int dim = mesh.dim();
+  model->topology = build_mesh_topology(mesh);
+  model->locator = std::make_unique<PointLocator>(mesh);
+
+  for (const auto& m : spec.materials) {
+    try {
+      model->materials.push_back(create_material(m.model, m.parameters));
+    } catch (const ParameterError& e) {
+      SourceLocation where = m.source;
+      where.key_path += "." + e.key();
+      throw InputError(where, e.what());
+    }
+  }
+
+  // Mesh bounds, to report bodies that stick out of the mesh.
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (const auto& x : mesh.nodes) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const double tol = 1e-9 * (hi - lo).head(dim).norm();
+
+  const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
+  std::vector<RegionTest> body_regions;
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    const auto& body = spec.bodies[b];
+    body_regions.emplace_back(body.region, mesh, dim);
+    if (auto box = body_regions.back().bounds()) {
+      for (int d = 0; d < dim; ++d)
+        if (box->first(d) < lo(d) - tol || box->second(d) > hi(d) + tol)
+          throw InputError(body.region.source,
+                           fmt::format("body '{}' reaches outside the mesh: its region spans "
+                                       "[{}, {}] in {} but the mesh spans [{}, {}]",
+                                       body.name, box->first(d), box->second(d), "xyz"[d], lo(d),
+                                       hi(d)));
+    }
+    Index material = 0;
+    for (std::size_t m = 0; m < spec.materials.size(); ++m)
+      if (spec.materials[m].name == body.material) material = static_cast<Index>(m);
+    const double density = model->materials[material]->density();
+    std::array<Expression, 3> v0;
+    for (int d = 0; d < 3; ++d) v0[d] = Expression(body.initial_velocity[d]);
+
+    const Index before = model->points.size();
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      if (body.region.kind == spec::Region::Kind::Group && !body_regions.back().contains(Vec3::Zero(), c))
+        continue;
+      std::vector<SeedPoint> seeds;
+      try {
+        seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
+      } catch (const std::invalid_argument& e) {
+        SourceLocation where = body.source;
+        where.key_path += ".points_per_cell";
+        throw InputError(where, e.what());
+      }
+      for (const auto& s : seeds) {
+        if (!body_regions.back().contains(s.position, c)) continue;
+        for (std::size_t other = 0; other < b; ++other)
+          if (body_regions[other].contains(s.position, c))
+            throw InputError(body.region.source,
+                             fmt::format("bodies '{}' and '{}' overlap (at x = [{:g}, {:g}, {:g}])",
+                                         body.name, spec.bodies[other].name, s.position.x(),
+                                         s.position.y(), s.position.z()));
+        const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
+                                          density, c, s.xi);
+        for (int d = 0; d < dim; ++d)
+          model->points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
+      }
+    }
+    if (model->points.size() == before)
+      throw InputError(body.region.source,
+                       fmt::format("body '{}' has no material points: its region holds no "
+                                   "seeding position of any cell",
+                                   body.name));
+  }
+
+  if (spec.point_sets.size() > 64)
+    throw InputError(spec.point_sets[64].source, "at most 64 point sets are supported");
+  for (std::size_t k = 0; k < spec.point_sets.size(); ++k) {
+    const auto& set = spec.point_sets[k];
+    model->point_set_names.push_back(set.name);
+    RegionTest region(set.region, mesh, dim);
+    Index body = -1;
+    for (std::size_t b = 0; b < spec.bodies.size(); ++b)
+      if (spec.bodies[b].name == set.body) body = static_cast<Index>(b);
+    Index count = 0;
+    for (Index p = 0; p < model->points.size(); ++p) {
+      if (body >= 0 && model->points.body[p] != body) continue;
+      if (!region.contains(model->points.position[p], model->points.cell[p])) continue;
+      model->points.sets[p] |= std::uint64_t{1} << k;
+      ++count;
+    }
+    if (count == 0)
+      throw InputError(set.source, fmt::format("point set '{}' holds no material point", set.name));
+  }
+
+  for (const auto& phase : spec.phases)
+    for (const auto& fixity : phase.fixities)
+      if (!fixity.boundary.empty() && !mesh.node_groups.count(fixity.boundary)) {
+        std::string known;
+        for (const auto& [name, nodes] : mesh.node_groups) known += (known.empty() ? "" : ", ") + name;
+        throw InputError(fixity.source,
+                         fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
+                                     fixity.boundary, known.empty() ? "(none)" : known));
+      }
+  for (const auto& history : spec.output.histories)
+    if (!history.boundary.empty() && !mesh.node_groups.count(history.boundary))
+      throw InputError(history.source,
+                       fmt::format("the mesh has no boundary '{}'", history.boundary));
+  return model;
+}
+
+std::string describe_model(const Model& model) {
+  const auto& spec = model.spec;
+  std::string out;
+  out += fmt::format("model      {}{}\n", spec.file, spec.title.empty() ? "" : " — " + spec.title);
+  out += fmt::format("analysis   {}\n", to_string(spec.kinematics));
+  out += fmt::format("mesh       {} {} cells, {} nodes{}\n", model.mesh.num_cells(),
+                     to_string(model.mesh.cell_type), model.mesh.num_nodes(),
+                     spec.mesh.file.empty() ? " (generated)" : " from " + spec.mesh.file);
+  double mass = 0.0, volume = 0.0;
+  for (Index p = 0; p < model.points.size(); ++p) {
+    mass += model.points.mass[p];
+    volume += model.points.volume[p];
+  }
+  out += fmt::format("points     {} (volume {:.6g}{}, mass {:.6g})\n", model.points.size(), volume,
+                     spec.kinematics == Kinematics::Axisymmetric ? " per radian" : "", mass);
+  for (std::size_t m = 0; m < spec.materials.size(); ++m) {
+    std::string params;
+    for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
+    out += fmt::format("material   {}: {}{}\n", spec.materials[m].name, spec.materials[m].model, params);
+  }
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    Index count = 0;
+    for (Index p = 0; p < model.points.size(); ++p) count += model.points.body[p] == Index(b);
+    out += fmt::format("body       {}: {} points, {} per cell, material {}\n", spec.bodies[b].name,
+                       count, spec.bodies[b].points_per_cell, spec.bodies[b].material);
+  }
+  for (std::size_t k = 0; k < model.point_set_names.size(); ++k) {
+    Index count = 0;
+    for (Index p = 0; p < model.points.size(); ++p) count += (model.points.sets[p] >> k) & 1u;
+    out += fmt::format("point set  {}: {} points\n", model.point_set_names[k], count);
+  }
+  for (const auto& phase : spec.phases)
+    out += fmt::format("phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}\n", phase.name,
+                       phase.duration, phase.time_step.initial, phase.time_step.min,
+                       phase.time_step.max,
+                       phase.dynamics.quasi_static
+                           ? std::string("quasi-static")
+                           : fmt::format("Newmark beta={:g} gamma={:g}", phase.dynamics.beta,
+                                         phase.dynamics.gamma));
+  return out;
+}
+
+}  // namespace geompm

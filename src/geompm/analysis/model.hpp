@@ -1,0 +1,45 @@
+// The model as the engine sees it: the mesh and its topology, the materials, the material points
+// seeded into the bodies, and the named point sets; built from the spec read from a model file.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geompm/io/model_spec.hpp"
+#include "geompm/materials/material.hpp"
+#include "geompm/mesh/mesh.hpp"
+#include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/mesh/point_locator.hpp"
+#include "geompm/points/material_points.hpp"
+
+namespace geompm {
+
+struct Model {
+  spec::Model spec;
+  Mesh mesh;
+  MeshTopology topology;
+  std::unique_ptr<PointLocator> locator;
+  std::vector<std::unique_ptr<Material>> materials;  // in the order of spec.materials
+  MaterialPoints points;
+  std::vector<std::string> point_set_names;          // bit k of MaterialPoints::sets
+  double lost_mass = 0.0;                            // of points removed after leaving the mesh
+  Index lost_points = 0;
+
+  Kinematics kinematics() const { return spec.kinematics; }
+  std::vector<const Material*> material_pointers() const;
+  int point_set_bit(const std::string& name) const;  // -1 if unknown
+  double largest_modulus() const;
+};
+
+/// Builds the mesh (generated or imported), checks it, creates the materials, seeds the bodies and
+/// selects the point sets. Throws InputError naming the model file, key path and line for
+/// anything the reader could not check alone (a region group the mesh lacks, a body outside the
+/// mesh or with no points, overlapping bodies, an empty point set, a fixity boundary the mesh
+/// lacks).
+std::unique_ptr<Model> build_model(const spec::Model& spec);
+
+/// The summary `geompm check` prints: mesh, points, materials, bodies, phases.
+std::string describe_model(const Model& model);
+
+}  // namespace geompm

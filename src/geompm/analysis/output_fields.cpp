@@ -1,0 +1,65 @@
+#include "geompm/analysis/output_fields.hpp"
+
+#include <cmath>
+
+#include "geompm/core/tensor.hpp"
+
+namespace geompm {
+
+FieldSet point_fields(const Model& model) {
+  const auto& p = model.points;
+  const Index n = p.size();
+  FieldSet f;
+  f.vectors.emplace_back("displacement", p.displacement);
+  f.vectors.emplace_back("velocity", p.velocity);
+  f.vectors.emplace_back("acceleration", p.acceleration);
+  f.tensors.emplace_back("stress", p.stress);
+  std::vector<Mat3> strain(n);
+  std::vector<double> mean(n), q(n);
+  for (Index i = 0; i < n; ++i) {
+    const Mat3& F = p.deformation_gradient[i];
+    strain[i] = 0.5 * symmetric_log(F * F.transpose());
+    mean[i] = p.stress[i].trace() / 3.0;
+    const Mat3 s = p.stress[i] - mean[i] * Mat3::Identity();
+    q[i] = std::sqrt(1.5 * s.squaredNorm());
+  }
+  f.tensors.emplace_back("strain", std::move(strain));
+  f.scalars.emplace_back("mean_stress", std::move(mean));
+  f.scalars.emplace_back("deviatoric_stress", std::move(q));
+  f.scalars.emplace_back("volume", p.volume);
+  f.scalars.emplace_back("mass", p.mass);
+  f.integers.emplace_back("id", p.id);
+  f.integers.emplace_back("body", p.body);
+  f.integers.emplace_back("material", p.material);
+  return f;
+}
+
+void grid_fields(const Model& model, const GridSystem& grid, const StepResult& step,
+                 FieldSet& node_fields, FieldSet& cell_fields) {
+  const Index n_nodes = model.mesh.num_nodes();
+  const int dim = grid.dim();
+  std::vector<Vec3> velocity(n_nodes, Vec3::Zero()), displacement(n_nodes, Vec3::Zero());
+  std::vector<double> mass(n_nodes, 0.0);
+  const auto& active = grid.active_nodes();
+  for (Index a = 0; a < static_cast<Index>(active.size()); ++a) {
+    for (int i = 0; i < dim; ++i) {
+      velocity[active[a]](i) = step.velocity(a * dim + i);
+      displacement[active[a]](i) = step.displacement(a * dim + i);
+    }
+    mass[active[a]] = grid.mass()(a * dim);
+  }
+  node_fields.vectors.emplace_back("velocity", std::move(velocity));
+  node_fields.vectors.emplace_back("step_displacement", std::move(displacement));
+  node_fields.scalars.emplace_back("mass", std::move(mass));
+
+  std::vector<Index> is_active(model.mesh.num_cells(), 0);
+  std::vector<double> fill(model.mesh.num_cells(), 0.0);
+  for (std::size_t k = 0; k < grid.active_cells().size(); ++k) {
+    is_active[grid.active_cells()[k]] = 1;
+    fill[grid.active_cells()[k]] = grid.cell_fill()[k];
+  }
+  cell_fields.integers.emplace_back("active", std::move(is_active));
+  cell_fields.scalars.emplace_back("fill", std::move(fill));
+}
+
+}  // namespace geompm

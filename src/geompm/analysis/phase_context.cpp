@@ -1,0 +1,47 @@
+#include "geompm/analysis/phase_context.hpp"
+
+#include <limits>
+
+namespace geompm {
+
+PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(&phase) {
+  fixities = resolve_fixities(model.mesh, phase.fixities);
+  for (const auto& m : phase.motions) {
+    Motion motion;
+    motion.set = model.point_set_bit(m.point_set);
+    motion.velocity = m.velocity;
+    for (int d = 0; d < 3; ++d)
+      if (!m.components[d].empty()) motion.components[d] = Expression(m.components[d]);
+    motions.push_back(std::move(motion));
+  }
+  for (const auto& l : phase.loads) {
+    Load load;
+    load.set = model.point_set_bit(l.point_set);
+    for (int d = 0; d < 3; ++d) load.components[d] = Expression(l.components[d]);
+    loads.push_back(std::move(load));
+  }
+}
+
+Vec3 PhaseContext::gravity(double t) const {
+  if (!spec->gravity) return Vec3::Zero();
+  const double factor = spec->gravity->ramp ? std::min(1.0, t / spec->duration) : 1.0;
+  return factor * spec->gravity->acceleration;
+}
+
+Vec3 PhaseContext::motion_increment(const Motion& m, double t0, double t1) const {
+  Vec3 du = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  for (int d = 0; d < 3; ++d) {
+    if (!m.components[d]) continue;
+    const Expression& f = *m.components[d];
+    // A velocity is integrated with the trapezoidal rule, consistent with Newmark (gamma = 1/2).
+    du(d) = m.velocity ? 0.5 * (t1 - t0) * (f.at_time(t0) + f.at_time(t1))
+                       : f.at_time(t1) - f.at_time(t0);
+  }
+  return du;
+}
+
+Vec3 PhaseContext::load(const Load& l, double t) const {
+  return Vec3(l.components[0].at_time(t), l.components[1].at_time(t), l.components[2].at_time(t));
+}
+
+}  // namespace geompm

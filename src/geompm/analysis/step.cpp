@@ -1,0 +1,235 @@
+#include "geompm/analysis/step.hpp"
+
+#include <cmath>
+
+#include "geompm/solver/newmark.hpp"
+
+namespace geompm {
+
+namespace {
+
+GridSettings grid_settings(const Model& model) {
+  GridSettings s;
+  s.kinematics = model.kinematics();
+  s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * model.largest_modulus();
+  s.buffer_layers = model.spec.numerics.buffer_layers;
+  return s;
+}
+
+// The Lagrangian phase as a nonlinear problem in the free displacement increments: residual
+// R = f_ext - f_int - M a (seed eq. 6) with a from Newmark (eq. 8) in dynamics.
+class LagrangianProblem final : public NonlinearProblem {
+ public:
+  LagrangianProblem(GridSystem& grid, const MaterialPoints& points, const Vector& f_ext,
+                    Vector& du, bool dynamic, const Newmark& newmark)
+      : grid_(grid), points_(points), f_ext_(f_ext), du_(du), dynamic_(dynamic), newmark_(newmark) {
+    // Positions of the diagonal entries, to add the inertia term M / (beta dt^2).
+    const SparseMatrix& pattern = grid.pattern();
+    diagonal_.resize(pattern.cols());
+    for (Index j = 0; j < pattern.cols(); ++j)
+      for (int at = pattern.outerIndexPtr()[j]; at < pattern.outerIndexPtr()[j + 1]; ++at)
+        if (pattern.innerIndexPtr()[at] == j) diagonal_[j] = at;
+  }
+
+  bool evaluate(const Vector& x, Vector& residual, double& force_scale,
+                SparseMatrix* tangent) override {
+    scatter(x);
+    if (!grid_.internal_force(points_, du_, f_int_, tangent)) return false;
+    inertia_ = Vector::Zero(du_.size());
+    if (dynamic_)
+      inertia_ = grid_.mass().cwiseProduct(
+          newmark_.acceleration(du_, grid_.velocity(), grid_.acceleration()));
+    const Vector r = f_ext_ - f_int_ - inertia_;
+    residual.resize(x.size());
+    const auto& free = grid_.free_index();
+    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+      if (free[d] >= 0) residual(free[d]) = r(d);
+    force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
+    if (tangent && dynamic_) {
+      double* values = tangent->valuePtr();
+      for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+        if (free[d] >= 0) values[diagonal_[free[d]]] += newmark_.mass_factor() * grid_.mass()(d);
+    }
+    return true;
+  }
+
+  double increment_norm(const Vector& x) const override {
+    const_cast<LagrangianProblem*>(this)->scatter(x);
+    return du_.norm();
+  }
+
+  const Vector& internal_force() const { return f_int_; }
+  const Vector& inertia() const { return inertia_; }
+
+ private:
+  void scatter(const Vector& x) {
+    const auto& free = grid_.free_index();
+    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+      if (free[d] >= 0) du_(d) = x(free[d]);
+  }
+
+  GridSystem& grid_;
+  const MaterialPoints& points_;
+  const Vector& f_ext_;
+  Vector& du_;
+  bool dynamic_;
+  Newmark newmark_;
+  std::vector<int> diagonal_;
+  Vector f_int_, inertia_;
+};
+
+}  // namespace
+
+StepSolver::StepSolver(Model& model, LinearSolver& solver)
+    : model_(model),
+      solver_(solver),
+      grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {}
+
+void StepSolver::prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
+                                         std::vector<Vec3>& prescribed) {
+  prescribed.clear();
+  if (phase.motions.empty()) return;
+  const MaterialPoints& points = model_.points;
+  const Index n = points.size();
+  std::vector<double> stiffness(n, 0.0);
+  std::vector<Vec3> target(n, Vec3::Zero());
+  std::vector<unsigned char> mask(n, 0);
+  for (const auto& motion : phase.motions) {
+    // Target: the prescribed displacement since the phase start at t1, so that the error of a
+    // step is corrected in the next one rather than accumulated.
+    const Vec3 increment = phase.motion_increment(motion, t0, t1);
+    prescribed.push_back(motion.done + increment);
+    for (Index p = 0; p < n; ++p) {
+      if (!(points.sets[p] >> motion.set & 1u)) continue;
+      const double h = grid_.cell_size(p);
+      // Stiffness far above the point's own: k = alpha E V / h^2 with alpha = 1e4, so the
+      // motion is met to about 1e-4 of the deformation without a user parameter.
+      stiffness[p] = 1e4 * model_.materials[points.material[p]]->reference_modulus() *
+                     points.volume[p] / (h * h);
+      for (int i = 0; i < grid_.dim(); ++i)
+        if (!std::isnan(increment(i))) {
+          mask[p] |= static_cast<unsigned char>(1u << i);
+          target[p](i) = prescribed.back()(i) - points.phase_displacement[p](i);
+        }
+    }
+  }
+  grid_.set_point_targets(std::move(stiffness), std::move(target), std::move(mask));
+}
+
+StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
+  StepResult result;
+  MaterialPoints& points = model_.points;
+  const int dim = grid_.dim();
+  const double t1 = t0 + dt;
+  const bool dynamic = !phase.spec->dynamics.quasi_static;
+
+  // --- phase 1: initialise --------------------------------------------------------------
+  grid_.initialise(points);
+  const Index n_dofs = grid_.num_dofs();
+  const auto& node_to_active = grid_.node_to_active();
+
+  result.gravity = phase.gravity(t1);
+  std::vector<PointSetForce> forces;
+  for (const auto& load : phase.loads) forces.push_back({load.set, phase.load(load, t1)});
+  const Vector f_ext = grid_.external_force(points, result.gravity, forces);
+
+  // Prescribed motions of point sets: penalty springs on the points (docs/theory.md §5).
+  std::vector<Vec3> prescribed;
+  prescribe_point_motions(phase, t0, t1, prescribed);
+
+  // Fixities of grid nodes.
+  result.constrained.assign(n_dofs, 0);
+  Vector du = Vector::Zero(n_dofs);
+  for (const auto& fixity : phase.fixities)
+    for (Index node : fixity.nodes) {
+      const Index n = node_to_active[node];
+      if (n < 0) continue;
+      for (int i = 0; i < dim; ++i)
+        if (fixity.components[i]) result.constrained[n * dim + i] = 1;
+    }
+  grid_.set_constraints(result.constrained);
+
+  // --- phase 2: Lagrangian (Newton) -------------------------------------------------------
+  Newmark newmark{phase.spec->dynamics.beta, phase.spec->dynamics.gamma, dt};
+  LagrangianProblem problem(grid_, points, f_ext, du, dynamic, newmark);
+  NewtonSettings settings;
+  settings.max_iterations = phase.spec->newton.max_iterations;
+  settings.residual_tolerance = phase.spec->newton.residual_tolerance;
+  settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
+  Vector x = Vector::Zero(grid_.num_free());
+  for (Index d = 0; d < n_dofs; ++d)
+    if (grid_.free_index()[d] >= 0) x(grid_.free_index()[d]) = du(d);
+  result.newton = solve_newton(problem, solver_, settings, x, tangent_);
+  if (!result.newton.converged) return result;
+  result.converged = true;
+
+  // --- phase 3: convect ---------------------------------------------------------------------
+  result.displacement = du;
+  if (dynamic) {
+    result.acceleration = newmark.acceleration(du, grid_.velocity(), grid_.acceleration());
+    result.velocity = newmark.velocity(grid_.velocity(), grid_.acceleration(), result.acceleration);
+  } else {
+    result.acceleration = Vector::Zero(n_dofs);
+    result.velocity = du / dt;
+  }
+  result.reaction = problem.internal_force() + problem.inertia() - f_ext;
+  for (std::size_t m = 0; m < phase.motions.size(); ++m) {
+    Vec3 force = Vec3::Zero();
+    for (Index p = 0; p < points.size(); ++p)
+      if (points.sets[p] >> phase.motions[m].set & 1u) force += grid_.point_reactions()[p];
+    result.set_reactions.try_emplace(phase.motions[m].set, Vec3::Zero()).first->second += force;
+  }
+  convect_and_relocate(result, dt, dynamic);
+  if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
+    for (std::size_t m = 0; m < phase.motions.size(); ++m) {
+      const Vec3 reached = prescribed[m];
+      for (int i = 0; i < 3; ++i)
+        if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
+    }
+  return result;
+}
+
+void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynamic) {
+  MaterialPoints& points = model_.points;
+  const Index n = points.size();
+  const int dim = grid_.dim();
+  // Where each point goes, found before anything is committed: under the "stop" policy a point
+  // that leaves the mesh stops the run with the points still in the last converged state.
+  std::vector<Location> found(n);
+  std::vector<Vec3> destination(n);
+  std::vector<char> lost(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
+  for (Index p = 0; p < n; ++p) {
+    const auto nodes = model_.mesh.cell_nodes(points.cell[p]);
+    const auto N = grid_.shape_values(p);
+    destination[p] = points.position[p];
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int i = 0; i < dim; ++i)
+        destination[p](i) += N[a] * result.displacement(grid_.node_to_active()[nodes[a]] * dim + i);
+    if (auto where = model_.locator->locate(destination[p], points.cell[p]))
+      found[p] = *where;
+    else
+      lost[p] = 1;
+  }
+  for (Index p = 0; p < n; ++p)
+    if (lost[p]) result.lost.emplace_back(points.id[p], destination[p]);
+  if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Stop)
+    return;
+
+  grid_.convect(points, result.displacement, result.velocity, result.acceleration, dt, dynamic);
+  for (Index p = 0; p < n; ++p)
+    if (!lost[p]) {
+      points.cell[p] = found[p].cell;
+      points.local[p] = found[p].xi;
+    }
+  if (!result.lost.empty()) {
+    for (Index p = 0; p < n; ++p)
+      if (lost[p]) {
+        model_.lost_mass += points.mass[p];
+        ++model_.lost_points;
+      }
+    points.remove(lost);
+  }
+}
+
+}  // namespace geompm

@@ -1,0 +1,52 @@
+// One step of the implicit MPM (seed paper Fig. 1): initialise the grid from the points, solve
+// the Lagrangian phase by Newton, convect the solution back to the points and relocate them.
+// A step that does not converge leaves the points as they were, so the caller can cut the
+// time step back and retry from the last converged state.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geompm/analysis/phase_context.hpp"
+#include "geompm/physics/grid_system.hpp"
+#include "geompm/solver/linear_solver.hpp"
+#include "geompm/solver/newton.hpp"
+
+namespace geompm {
+
+struct StepResult {
+  bool converged = false;
+  NewtonResult newton;
+  // Grid solution of the converged step (dof-indexed over grid.active_nodes()).
+  Vector displacement, velocity, acceleration;
+  Vector reaction;                        // f_int + M a - f_ext, non-zero at constrained dofs
+  std::vector<char> constrained;          // per dof
+  std::map<int, Vec3> set_reactions;      // point-set bit -> force its prescribed motion exerts
+  Vec3 gravity = Vec3::Zero();
+  std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
+};
+
+class StepSolver {
+ public:
+  StepSolver(Model& model, LinearSolver& solver);
+
+  /// Advances the model from phase time t0 by dt. If the step converges the points are updated
+  /// (and points that left the mesh handled by the model's policy: result.lost lists them; under
+  /// "stop" the points are NOT updated and the caller stops the run).
+  StepResult advance(PhaseContext& phase, double t0, double dt);
+
+  GridSystem& grid() { return grid_; }
+
+ private:
+  void convect_and_relocate(StepResult& result, double dt, bool dynamic);
+  void prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
+                               std::vector<Vec3>& prescribed);
+
+  Model& model_;
+  LinearSolver& solver_;
+  GridSystem grid_;
+  SparseMatrix tangent_;
+};
+
+}  // namespace geompm

@@ -1,0 +1,26 @@
+// Fixities of grid nodes: on a named boundary of the mesh or on a plane normal to an axis;
+// "normal" fixes the component normal to that boundary (which must then be a plane normal to an
+// axis: the grid is reset every step, so its boundaries stay where the mesh put them).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "geompm/io/model_spec.hpp"
+#include "geompm/mesh/mesh.hpp"
+
+namespace geompm {
+
+struct ResolvedFixity {
+  std::string name;           // boundary name, or "plane x=..."
+  std::vector<Index> nodes;   // mesh nodes
+  std::array<bool, 3> components = {false, false, false};
+};
+
+/// Throws InputError (with the fixity's source) for a boundary that is not axis-aligned under
+/// "normal", or a plane that holds no mesh node.
+std::vector<ResolvedFixity> resolve_fixities(const Mesh& mesh,
+                                             const std::vector<spec::Fixity>& fixities);
+
+}  // namespace geompm

@@ -1,0 +1,220 @@
+// The model file, top level: the sections in order, and the small ones (analysis, mesh,
+// materials, numerics). Bodies and point sets, phases and output have files of their own
+// (model_reader_*.cpp); the key layout is documented in docs/user-guide.md.
+#include "geompm/io/model_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "geompm/io/model_reader_sections.hpp"
+#include "geompm/materials/material.hpp"
+
+namespace geompm {
+
+namespace model_reader {
+
+namespace {
+
+Kinematics read_analysis(const yaml::Node& node) {
+  const yaml::Map analysis = node.map({"kinematics"});
+  const std::string name =
+      analysis.required("kinematics").choice({"plane_strain", "axisymmetric", "3d"});
+  if (name == "axisymmetric") return Kinematics::Axisymmetric;
+  if (name == "3d") return Kinematics::ThreeD;
+  return Kinematics::PlaneStrain;
+}
+
+std::vector<AxisSegment> read_axis(const yaml::Node& node) {
+  if (!node.is_map() && !node.is_list())
+    node.fail("expected a segment {length, cells, ratio} or a list of segments, found " +
+              node.describe());
+  const std::vector<yaml::Node> segments = node.is_list() ? node.items() : std::vector{node};
+  if (segments.empty()) node.fail("expected at least one segment {length, cells, ratio}");
+  std::vector<AxisSegment> axis;
+  for (const yaml::Node& segment_node : segments) {
+    const yaml::Map segment = segment_node.map({"length", "cells", "ratio"});
+    AxisSegment s;
+    s.length = read_positive(segment.required("length"));
+    const yaml::Node cells = segment.required("cells");
+    s.cells = cells.integer();
+    if (s.cells < 1) cells.fail(fmt::format("expected at least 1 cell, found {}", s.cells));
+    if (auto ratio = segment.find("ratio")) s.ratio = read_positive(*ratio);
+    axis.push_back(s);
+  }
+  return axis;
+}
+
+StructuredMeshSpec read_generated_mesh(const yaml::Node& node, Context& context) {
+  const yaml::Map generate = node.map({"cell", "origin", "x", "y", "z"});
+  const int dim = context.dimension;
+  StructuredMeshSpec mesh;
+  mesh.cell_type = dim == 3 ? CellType::Hex8 : CellType::Quad4;
+  if (auto cell = generate.find("cell")) {
+    const std::string name = cell->choice({"tri3", "tri6", "quad4", "tet4", "hex8"});
+    mesh.cell_type = *parse_cell_type(name);
+    if (cell_dimension(mesh.cell_type) != dim)
+      cell->fail(fmt::format("'{}' cells are {}D but the kinematics '{}' is {}D; use {}", name,
+                             cell_dimension(mesh.cell_type), to_string(context.kinematics), dim,
+                             dim == 3 ? "tet4 or hex8" : "tri3, tri6 or quad4"));
+  }
+  if (auto origin = generate.find("origin")) {
+    mesh.origin = origin->vector(dim);
+    if (context.kinematics == Kinematics::Axisymmetric && mesh.origin.x() < 0)
+      origin->fail(
+          fmt::format("in an axisymmetric model x is the radius: the origin's x must be "
+                      ">= 0, found {}",
+                      mesh.origin.x()));
+  }
+  const char* axis_names[] = {"x", "y", "z"};
+  for (int i = 0; i < dim; ++i) mesh.axes[i] = read_axis(generate.required(axis_names[i]));
+  if (dim == 2)
+    if (auto z = generate.find("z")) z->fail("a 2D model has no z axis; remove 'z'");
+
+  context.cell_type = mesh.cell_type;
+  context.boundaries =
+      dim == 3 ? std::vector<std::string>{"left", "right", "front", "back", "bottom", "top"}
+               : std::vector<std::string>{"left", "right", "bottom", "top"};
+  return mesh;
+}
+
+}  // namespace
+
+spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory, Context& context) {
+  const yaml::Map section = node.map({"generate", "file"});
+  spec::Mesh mesh;
+  mesh.source = node.where();
+  if (section.exactly_one_of({"generate", "file"}) == "generate") {
+    mesh.generate = read_generated_mesh(section.required("generate"), context);
+    return mesh;
+  }
+  const yaml::Node file = section.required("file");
+  const std::string given = file.text();
+  if (given.empty()) file.fail("expected the path of a Gmsh .msh file, found an empty text");
+  std::filesystem::path path(given);
+  if (path.is_relative()) path = std::filesystem::path(model_directory) / path;
+  path = path.lexically_normal();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    file.fail(
+        fmt::format("mesh file '{}' not found (looked for {}; a relative path starts at the "
+                    "model file's directory)",
+                    given, path.string()));
+  mesh.file = path.string();
+  return mesh;
+}
+
+std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context) {
+  std::vector<spec::Material> materials;
+  for (const auto& [name, material_node] : node.entries()) {
+    spec::Material material;
+    material.name = name;
+    material.source = material_node.where();
+    if (name.empty()) material_node.fail("a material needs a name");
+    // Every key but "model" is a parameter; which ones the model takes, and their ranges, are the
+    // material's own business (create_material), so the reader asks it.
+    const std::vector<std::pair<std::string, yaml::Node>> entries = material_node.entries();
+    for (const auto& [key, value] : entries) {
+      if (key == "model")
+        material.model = value.text();
+      else
+        material.parameters[key] = value.number();
+    }
+    const auto entry_of = [&](const std::string& key) -> const yaml::Node* {
+      for (const auto& [k, value] : entries)
+        if (k == key) return &value;
+      return nullptr;
+    };
+    if (!entry_of("model"))
+      throw InputError(SourceLocation{material.source.file, material.source.key_path + ".model",
+                                      material.source.line},
+                       fmt::format("missing required key 'model' in {}; known models: {}",
+                                   material.source.key_path, yaml::join(material_models())));
+    try {
+      create_material(material.model, material.parameters);
+    } catch (const ParameterError& e) {
+      if (const yaml::Node* value = entry_of(e.key())) value->fail(e.what());
+      throw InputError(
+          SourceLocation{material.source.file, material.source.key_path + "." + e.key(),
+                         material.source.line},
+          e.what());
+    }
+    context.materials.push_back(name);
+    materials.push_back(std::move(material));
+  }
+  if (materials.empty())
+    node.fail(
+        "expected at least one material, e.g. soil: {model: linear_elastic, E: 1000, "
+        "nu: 0.3}");
+  return materials;
+}
+
+spec::Numerics read_numerics(const yaml::Node& node) {
+  const yaml::Map section =
+      node.map({"empty_cell_stiffness", "buffer_layers", "lost_points", "linear_solver"});
+  spec::Numerics numerics;
+  if (auto stiffness = section.find("empty_cell_stiffness"))
+    numerics.empty_cell_stiffness = read_non_negative(*stiffness);
+  if (auto layers = section.find("buffer_layers")) {
+    numerics.buffer_layers = layers->integer();
+    if (numerics.buffer_layers < 0)
+      layers->fail(fmt::format("expected a whole number >= 0, found {}", numerics.buffer_layers));
+  }
+  if (auto lost = section.find("lost_points"))
+    numerics.lost_points = lost->choice({"stop", "remove"}) == "remove"
+                               ? spec::LostPointPolicy::Remove
+                               : spec::LostPointPolicy::Stop;
+  if (auto solver = section.find("linear_solver"))
+    numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
+  return numerics;
+}
+
+}  // namespace model_reader
+
+spec::Model read_model(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw InputError(SourceLocation{path, "", 0}, "the model file does not exist");
+  if (!std::filesystem::is_regular_file(path, error))
+    throw InputError(SourceLocation{path, "", 0}, "not a file (expected a YAML or JSON model)");
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in || in.bad()) throw InputError(SourceLocation{path, "", 0}, "cannot read the model file");
+  return read_model_from_string(text.str(), path);
+}
+
+spec::Model read_model_from_string(const std::string& text, const std::string& file_name) {
+  using namespace model_reader;
+  const yaml::Node root = yaml::parse(text, file_name);
+  const char* sections = "analysis, mesh, materials, bodies, phases";
+  if (root.is_null()) root.fail(fmt::format("the model file is empty; expected {}", sections));
+  if (!root.is_map())
+    root.fail(fmt::format("expected a map of sections ({}), found {}", sections, root.describe()));
+  const yaml::Map top = root.map({"title", "analysis", "mesh", "materials", "bodies", "point_sets",
+                                  "phases", "output", "numerics"});
+
+  spec::Model model;
+  model.file = file_name;
+  const std::filesystem::path file_path(file_name.empty() ? "." : file_name);
+  model.directory = std::filesystem::absolute(file_path).lexically_normal().parent_path().string();
+  if (auto title = top.find_non_empty("title")) model.title = title->text();
+  model.kinematics = read_analysis(top.required("analysis"));
+
+  Context context;
+  context.kinematics = model.kinematics;
+  context.dimension = spatial_dimension(model.kinematics);
+  model.mesh = read_mesh(top.required("mesh"), model.directory, context);
+  model.materials = read_materials(top.required("materials"), context);
+  model.bodies = read_bodies(top.required("bodies"), context);
+  if (auto point_sets = top.find_non_empty("point_sets"))
+    model.point_sets = read_point_sets(*point_sets, context);
+  model.phases = read_phases(top.required("phases"), context);
+  if (auto output = top.find_non_empty("output")) model.output = read_output(*output, context);
+  if (auto numerics = top.find_non_empty("numerics")) model.numerics = read_numerics(*numerics);
+  return model;
+}
+
+}  // namespace geompm

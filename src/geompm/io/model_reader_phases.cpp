@@ -1,0 +1,255 @@
+// Model file section `phases`: what each stage of the analysis applies (gravity, fixities,
+// prescribed motion, loads) and how it is stepped and solved.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "geompm/io/model_reader_sections.hpp"
+
+namespace geompm::model_reader {
+
+namespace {
+
+// Prescribed motions and loads are functions of the phase time only: they act on a point set as
+// a whole.
+const std::vector<std::string> time_only = {"t"};
+
+spec::TimeStepping read_time_step(const yaml::Node& node) {
+  spec::TimeStepping step;
+  if (node.is_scalar()) {
+    // Short form: a fixed step size that may still be cut back when Newton fails.
+    step.initial = read_positive(node);
+    step.max = step.initial;
+    step.min = 1e-3 * step.initial;
+    return step;
+  }
+  const yaml::Map section =
+      node.map({"initial", "min", "max", "growth", "cutback", "easy_iterations"});
+  const yaml::Node initial = section.required("initial");
+  step.initial = read_positive(initial);
+  step.max = step.initial;
+  if (auto max = section.find("max")) step.max = read_positive(*max);
+  step.min = 1e-3 * std::min(step.initial, step.max);
+  if (auto min = section.find("min")) {
+    step.min = read_positive(*min);
+    if (step.min > step.max)
+      min->fail(fmt::format("min ({}) must not exceed max ({})", step.min, step.max));
+  }
+  if (step.initial < step.min || step.initial > step.max)
+    initial.fail(fmt::format("initial ({}) must lie between min ({}) and max ({})", step.initial,
+                             step.min, step.max));
+  if (auto growth = section.find("growth")) {
+    step.growth = growth->number();
+    if (!(step.growth >= 1))
+      growth->fail(fmt::format("expected a factor >= 1 (1 = never grow), found {}", step.growth));
+  }
+  if (auto cutback = section.find("cutback")) {
+    step.cutback = cutback->number();
+    if (!(step.cutback > 0 && step.cutback < 1))
+      cutback->fail(fmt::format("expected a factor in (0, 1), found {}", step.cutback));
+  }
+  if (auto easy = section.find("easy_iterations")) {
+    step.easy_iterations = easy->integer();
+    if (step.easy_iterations < 1)
+      easy->fail(fmt::format("expected a whole number >= 1, found {}", step.easy_iterations));
+  }
+  return step;
+}
+
+spec::Dynamics read_dynamics(const yaml::Node& node) {
+  spec::Dynamics dynamics;
+  if (node.is_scalar()) {
+    dynamics.quasi_static = node.choice({"quasi_static", "newmark"}) == "quasi_static";
+    return dynamics;
+  }
+  if (!node.is_map())
+    node.fail("expected quasi_static, newmark, or {newmark: {beta, gamma}}; found " +
+              node.describe());
+  const yaml::Map section = node.map({"newmark"});
+  const yaml::Node newmark = section.required("newmark");
+  dynamics.quasi_static = false;
+  if (newmark.is_null()) return dynamics;  // "newmark:" alone: the defaults
+  const yaml::Map parameters = newmark.map({"beta", "gamma"});
+  if (auto beta = parameters.find("beta")) {
+    dynamics.beta = beta->number();
+    if (!(dynamics.beta > 0 && dynamics.beta <= 0.5))
+      beta->fail(fmt::format("Newmark beta must lie in (0, 0.5], found {}", dynamics.beta));
+  }
+  if (auto gamma = parameters.find("gamma")) {
+    dynamics.gamma = gamma->number();
+    if (!(dynamics.gamma >= 0.5 && dynamics.gamma <= 1))
+      gamma->fail(fmt::format("Newmark gamma must lie in [0.5, 1], found {}", dynamics.gamma));
+  }
+  return dynamics;
+}
+
+spec::Newton read_newton(const yaml::Node& node) {
+  const yaml::Map section =
+      node.map({"max_iterations", "residual_tolerance", "displacement_tolerance"});
+  spec::Newton newton;
+  if (auto iterations = section.find("max_iterations")) {
+    newton.max_iterations = iterations->integer();
+    if (newton.max_iterations < 1)
+      iterations->fail(
+          fmt::format("expected a whole number >= 1, found {}", newton.max_iterations));
+  }
+  if (auto tolerance = section.find("residual_tolerance"))
+    newton.residual_tolerance = read_positive(*tolerance);
+  if (auto tolerance = section.find("displacement_tolerance"))
+    newton.displacement_tolerance = read_positive(*tolerance);
+  return newton;
+}
+
+spec::Gravity read_gravity(const yaml::Node& node, const Context& context) {
+  const yaml::Map section = node.map({"acceleration", "ramp"});
+  spec::Gravity gravity;
+  const yaml::Node acceleration = section.required("acceleration");
+  gravity.acceleration = acceleration.vector(context.dimension);
+  // A radial body force is not axisymmetric gravity: gravity acts along the axis (y).
+  if (context.kinematics == Kinematics::Axisymmetric && gravity.acceleration.x() != 0)
+    acceleration.fail(
+        fmt::format("in an axisymmetric model x is the radius: gravity must act "
+                    "along y, so its x component must be 0, found {}",
+                    gravity.acceleration.x()));
+  gravity.ramp = section.boolean_or("ramp", false);
+  return gravity;
+}
+
+void read_fixed_components(const yaml::Node& node, const Context& context, spec::Fixity& fixity) {
+  const std::string expected =
+      fmt::format("expected normal, all, a component or a list of components such as {}",
+                  context.dimension == 3 ? "[x, z]" : "[x, y]");
+  if (node.is_scalar()) {
+    const std::string value = node.text();
+    if (value == "normal") {
+      fixity.normal_only = true;
+      return;
+    }
+    if (value == "all") {
+      for (int i = 0; i < context.dimension; ++i) fixity.components[i] = true;
+      return;
+    }
+    if (value == "x" || value == "y" || value == "z" || value == "0" || value == "1" ||
+        value == "2") {
+      fixity.components[read_component(node, context.dimension)] = true;
+      return;
+    }
+    node.fail(fmt::format("{}; found {}", expected, node.describe()));
+  }
+  if (!node.is_list()) node.fail(fmt::format("{}; found {}", expected, node.describe()));
+  const std::vector<yaml::Node> items = node.items();
+  if (items.empty()) node.fail(expected + "; found an empty list");
+  for (const yaml::Node& item : items) {
+    const int component = read_component(item, context.dimension);
+    if (fixity.components[component])
+      item.fail(fmt::format("the component {} is listed twice", component_name(component)));
+    fixity.components[component] = true;
+  }
+}
+
+spec::Fixity read_fixity(const yaml::Node& node, const Context& context) {
+  const yaml::Map section = node.map({"boundary", "plane", "fix"});
+  spec::Fixity fixity;
+  fixity.source = node.where();
+  if (section.exactly_one_of({"boundary", "plane"}) == "boundary") {
+    fixity.boundary = read_boundary_name(section.required("boundary"), context);
+  } else {
+    const yaml::Map plane = section.required("plane").map({"axis", "value"});
+    fixity.plane_axis = read_component(plane.required("axis"), context.dimension);
+    fixity.plane_value = plane.required("value").number();
+  }
+  read_fixed_components(section.required("fix"), context, fixity);
+  return fixity;
+}
+
+spec::PrescribedMotion read_motion(const yaml::Node& node, const Context& context) {
+  const yaml::Map section = node.map({"point_set", "displacement", "velocity"});
+  spec::PrescribedMotion motion;
+  motion.source = node.where();
+  motion.point_set = read_reference(section.required("point_set"), "point set", context.point_sets);
+  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
+  motion.velocity = kind == "velocity";
+  const yaml::Node components = section.required(kind);
+  motion.components = read_expression_vector(components, context.dimension, time_only, true, "");
+  if (std::all_of(motion.components.begin(), motion.components.end(),
+                  [](const std::string& c) { return c.empty(); }))
+    components.fail("every component is free (~); prescribe at least one, or remove the entry");
+  return motion;
+}
+
+spec::PointSetLoad read_load(const yaml::Node& node, const Context& context) {
+  const yaml::Map section = node.map({"point_set", "force"});
+  spec::PointSetLoad load;
+  load.source = node.where();
+  load.point_set = read_reference(section.required("point_set"), "point set", context.point_sets);
+  load.components =
+      read_expression_vector(section.required("force"), context.dimension, time_only, false, "0");
+  return load;
+}
+
+// A point set is either moved or loaded in a phase, once: two conditions on one set would fight.
+void check_point_set_used_once(const yaml::Node& node, const std::string& point_set,
+                               const std::vector<spec::PrescribedMotion>& motions,
+                               const std::vector<spec::PointSetLoad>& loads) {
+  for (const auto& motion : motions)
+    if (motion.point_set == point_set)
+      node.fail(
+          fmt::format("the point set '{}' already has a prescribed motion in this phase ({}, "
+                      "line {}); a point set is either moved or loaded, once per phase",
+                      point_set, motion.source.key_path, motion.source.line));
+  for (const auto& load : loads)
+    if (load.point_set == point_set)
+      node.fail(
+          fmt::format("the point set '{}' already has a load in this phase ({}, line {}); "
+                      "combine the two into one force",
+                      point_set, load.source.key_path, load.source.line));
+}
+
+spec::Phase read_phase(const yaml::Node& node, const Context& context,
+                       const std::vector<spec::Phase>& earlier) {
+  const yaml::Map section = node.map({"name", "duration", "time_step", "dynamics", "newton",
+                                      "gravity", "fixities", "prescribed_motion", "loads"});
+  spec::Phase phase;
+  phase.source = node.where();
+  const yaml::Node name = section.required("name");
+  phase.name = name.text();
+  if (phase.name.empty()) name.fail("a phase needs a name");
+  for (const spec::Phase& other : earlier)
+    if (other.name == phase.name)
+      name.fail(fmt::format("the phase name '{}' is already used by {} (line {})", phase.name,
+                            other.source.key_path, other.source.line));
+  if (auto duration = section.find("duration")) phase.duration = read_positive(*duration);
+  phase.time_step = read_time_step(section.required("time_step"));
+  if (auto dynamics = section.find("dynamics")) phase.dynamics = read_dynamics(*dynamics);
+  if (auto newton = section.find_non_empty("newton")) phase.newton = read_newton(*newton);
+  if (auto gravity = section.find("gravity")) phase.gravity = read_gravity(*gravity, context);
+  if (auto fixities = section.find_non_empty("fixities"))
+    for (const yaml::Node& item : fixities->items())
+      phase.fixities.push_back(read_fixity(item, context));
+  if (auto motions = section.find_non_empty("prescribed_motion"))
+    for (const yaml::Node& item : motions->items()) {
+      spec::PrescribedMotion motion = read_motion(item, context);
+      check_point_set_used_once(item, motion.point_set, phase.motions, phase.loads);
+      phase.motions.push_back(std::move(motion));
+    }
+  if (auto loads = section.find_non_empty("loads"))
+    for (const yaml::Node& item : loads->items()) {
+      spec::PointSetLoad load = read_load(item, context);
+      check_point_set_used_once(item, load.point_set, phase.motions, phase.loads);
+      phase.loads.push_back(std::move(load));
+    }
+  return phase;
+}
+
+}  // namespace
+
+std::vector<spec::Phase> read_phases(const yaml::Node& node, const Context& context) {
+  const std::vector<yaml::Node> items = node.items();
+  if (items.empty())
+    node.fail("expected at least one phase, e.g. - {name: gravity, time_step: 0.1}");
+  std::vector<spec::Phase> phases;
+  for (const yaml::Node& item : items) phases.push_back(read_phase(item, context, phases));
+  return phases;
+}
+
+}  // namespace geompm::model_reader

@@ -1,0 +1,68 @@
+// The pieces of the model reader (private to io/): one reader per section of the model file, and
+// the checks on single values that several sections share. read_model() in model_reader.cpp
+// calls the sections in file order; each section adds the names it defines to the Context so
+// that later sections can check their references (a body's material, a load's point set).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geompm/io/model_spec.hpp"
+#include "geompm/io/yaml_access.hpp"
+#include "geompm/mesh/cell_type.hpp"
+
+namespace geompm::model_reader {
+
+struct Context {
+  Kinematics kinematics = Kinematics::PlaneStrain;
+  int dimension = 2;
+  /// Known for a generated mesh; an imported mesh's cell type is known only after import.
+  std::optional<CellType> cell_type;
+  /// Boundaries of a generated mesh; empty for an imported mesh (its names are checked after
+  /// import, when its physical groups are known).
+  std::vector<std::string> boundaries;
+  std::vector<std::string> materials;
+  std::vector<std::string> bodies;
+  std::vector<std::string> point_sets;
+};
+
+// Sections, in file order.
+spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory, Context& context);
+std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context);
+spec::Region read_region(const yaml::Node& node, const Context& context);
+std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
+std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
+std::vector<spec::Phase> read_phases(const yaml::Node& node, const Context& context);
+spec::Output read_output(const yaml::Node& node, const Context& context);
+spec::Numerics read_numerics(const yaml::Node& node);
+
+// Shared value checks; each fails at the node with what was expected and what was found.
+
+/// x, y, z or 0, 1, 2, within the dimension.
+int read_component(const yaml::Node& node, int dimension);
+/// "x", "y", "z"
+const char* component_name(int component);
+
+/// An expression (a number or a muparser formula) that compiles and uses only `variables`.
+std::string read_expression(const yaml::Node& node, const std::vector<std::string>& variables);
+
+/// A list of `dimension` expressions; with `free_allowed`, a null (~) item is a free component
+/// and is returned as "". Components beyond the dimension are `unused`.
+std::array<std::string, 3> read_expression_vector(const yaml::Node& node, int dimension,
+                                                  const std::vector<std::string>& variables,
+                                                  bool free_allowed, const std::string& unused);
+
+/// A name that must be one of `defined` ("material", "body", "point set" for messages).
+std::string read_reference(const yaml::Node& node, const std::string& kind,
+                           const std::vector<std::string>& defined);
+
+/// A boundary name: for a generated mesh one of its boundaries; for an imported one any name.
+std::string read_boundary_name(const yaml::Node& node, const Context& context);
+
+/// Numbers with a range, failing with the range in the message.
+double read_positive(const yaml::Node& node);
+double read_non_negative(const yaml::Node& node);
+
+}  // namespace geompm::model_reader

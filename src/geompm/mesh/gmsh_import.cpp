@@ -1,0 +1,224 @@
+#include "geompm/mesh/gmsh_import.hpp"
+
+#include <fmt/format.h>
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <unordered_map>
+
+#include "geompm/core/error.hpp"
+#include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/gmsh_session.hpp"
+
+namespace geompm {
+
+namespace {
+
+/// Gmsh element type numbers of the cells geompm knows (their node order is Gmsh's, see
+/// element.hpp, so no renumbering is needed).
+std::optional<CellType> cell_type_of_gmsh(int gmsh_type) {
+  switch (gmsh_type) {
+    case 2:
+      return CellType::Tri3;
+    case 9:
+      return CellType::Tri6;
+    case 3:
+      return CellType::Quad4;
+    case 4:
+      return CellType::Tet4;
+    case 5:
+      return CellType::Hex8;
+    default:
+      return std::nullopt;
+  }
+}
+
+std::string gmsh_type_name(int gmsh_type) {
+  if (const auto type = cell_type_of_gmsh(gmsh_type)) return to_string(*type);
+  try {
+    std::string name;
+    int dim = 0, order = 0, nodes = 0, primary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(gmsh_type, name, dim, order, nodes, local, primary);
+    return fmt::format("'{}' (Gmsh type {})", name, gmsh_type);
+  } catch (...) {
+    return fmt::format("Gmsh type {}", gmsh_type);
+  }
+}
+
+struct PhysicalGroup {
+  int dim = 0;
+  std::string name;
+  std::vector<std::size_t> element_tags;  // dim == mesh dimension: the region's cells
+  std::vector<std::size_t> node_tags;     // dim < mesh dimension: the boundary's nodes
+};
+
+Mesh read_open_model(const std::string& path, int dimension) {
+  const SourceLocation where{path, "", 0};
+  const char* expected = dimension == 2 ? "triangles (tri3, tri6) or quadrangles (quad4)"
+                                        : "tetrahedra (tet4) or hexahedra (hex8)";
+
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+  gmsh::model::mesh::getElements(types, element_tags, element_nodes, dimension, -1);
+  if (types.empty())
+    throw InputError(where, fmt::format("has no {}D cells; expected {}", dimension, expected));
+  for (int type : types)
+    if (!cell_type_of_gmsh(type))
+      throw InputError(where, fmt::format("has {}D cells of the unsupported type {}; expected {}",
+                                          dimension, gmsh_type_name(type), expected));
+  if (types.size() > 1) {
+    std::string found;
+    for (int type : types) found += (found.empty() ? "" : ", ") + gmsh_type_name(type);
+    throw InputError(where, fmt::format("has mixed {}D cell types ({}); expected one type of {}",
+                                        dimension, found, expected));
+  }
+
+  Mesh mesh;
+  mesh.cell_type = *cell_type_of_gmsh(types[0]);
+  const std::vector<std::size_t>& cell_tags = element_tags[0];
+  const std::vector<std::size_t>& cell_node_tags = element_nodes[0];
+
+  std::vector<PhysicalGroup> groups;
+  gmsh::vectorpair physical;
+  gmsh::model::getPhysicalGroups(physical, -1);
+  for (const auto& [dim, tag] : physical) {
+    if (dim > dimension) continue;
+    PhysicalGroup group;
+    group.dim = dim;
+    gmsh::model::getPhysicalName(dim, tag, group.name);
+    if (group.name.empty()) group.name = fmt::format("group_{}", tag);
+    if (dim == dimension) {
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+      for (int entity : entities) {
+        std::vector<int> entity_types;
+        std::vector<std::vector<std::size_t>> tags, nodes;
+        gmsh::model::mesh::getElements(entity_types, tags, nodes, dim, entity);
+        for (const auto& some : tags)
+          group.element_tags.insert(group.element_tags.end(), some.begin(), some.end());
+      }
+    } else {
+      std::vector<double> coordinates;
+      gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, group.node_tags, coordinates);
+    }
+    groups.push_back(std::move(group));
+  }
+
+  // Compact node ids to 0..n-1, in the order of the Gmsh tags, keeping only the nodes of the
+  // cells and of the boundaries (Gmsh also stores nodes of geometry points, for example).
+  std::vector<std::size_t> used(cell_node_tags);
+  for (const PhysicalGroup& group : groups)
+    used.insert(used.end(), group.node_tags.begin(), group.node_tags.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::unordered_map<std::size_t, Index> node_index;
+  node_index.reserve(used.size());
+  for (std::size_t n = 0; n < used.size(); ++n) node_index.emplace(used[n], static_cast<Index>(n));
+
+  std::vector<std::size_t> all_tags;
+  std::vector<double> coordinates, parametric;
+  gmsh::model::mesh::getNodes(all_tags, coordinates, parametric, -1, -1, false, false);
+  mesh.nodes.assign(used.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  std::vector<char> seen(used.size(), 0);
+  for (std::size_t k = 0; k < all_tags.size(); ++k) {
+    const auto it = node_index.find(all_tags[k]);
+    if (it == node_index.end()) continue;
+    mesh.nodes[it->second] =
+        Vec3(coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]);
+    seen[it->second] = 1;
+  }
+  for (std::size_t n = 0; n < used.size(); ++n)
+    if (!seen[n])
+      throw InputError(where, fmt::format("an element refers to Gmsh node {}, which is not "
+                                          "defined; "
+                                          "expected every node in the $Nodes section",
+                                          used[n]));
+
+  if (dimension == 2) {
+    // A planar mesh written by Gmsh has z = 0 exactly; allow only round-off beyond that.
+    Vec3 lower = mesh.nodes[0], upper = mesh.nodes[0];
+    for (const Vec3& x : mesh.nodes) lower = lower.cwiseMin(x), upper = upper.cwiseMax(x);
+    const double round_off = 1e-12 * (upper - lower).norm();
+    for (std::size_t n = 0; n < used.size(); ++n) {
+      double& z = mesh.nodes[n][2];
+      if (std::abs(z) > round_off)
+        throw InputError(where, fmt::format("Gmsh node {} has z = {:g}; a 2D mesh must lie in the "
+                                            "plane z = 0 (x horizontal, y up)",
+                                            used[n], z));
+      z = 0.0;
+    }
+  }
+
+  mesh.connectivity.reserve(cell_node_tags.size());
+  for (std::size_t tag : cell_node_tags) mesh.connectivity.push_back(node_index.at(tag));
+
+  std::unordered_map<std::size_t, Index> cell_index;
+  cell_index.reserve(cell_tags.size());
+  for (std::size_t c = 0; c < cell_tags.size(); ++c)
+    cell_index.emplace(cell_tags[c], static_cast<Index>(c));
+  for (const PhysicalGroup& group : groups) {
+    if (group.dim == dimension) {
+      std::vector<Index>& cells = mesh.cell_groups[group.name];
+      for (std::size_t tag : group.element_tags)
+        if (const auto it = cell_index.find(tag); it != cell_index.end())
+          cells.push_back(it->second);
+      std::sort(cells.begin(), cells.end());
+      cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    } else {
+      // Groups of several lower dimensions may share a name (a curve and its end points).
+      std::vector<Index>& nodes = mesh.node_groups[group.name];
+      for (std::size_t tag : group.node_tags) nodes.push_back(node_index.at(tag));
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    }
+  }
+  return mesh;
+}
+
+}  // namespace
+
+Mesh read_gmsh_mesh(const std::string& path, int dimension) {
+  const SourceLocation where{path, "", 0};
+  if (dimension != 2 && dimension != 3)
+    throw InputError(
+        where, fmt::format("cannot be read as a {}D mesh; expected dimension 2 or 3", dimension));
+  // Gmsh would silently open an empty model for a missing file, so look first.
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw InputError(where, "file not found; expected a Gmsh mesh file (.msh)");
+  if (!std::filesystem::is_regular_file(path, error))
+    throw InputError(where, "is not a regular file; expected a Gmsh mesh file (.msh)");
+
+  Mesh mesh;
+  {
+    GmshSession session;
+    try {
+      gmsh::open(path);
+    } catch (...) {
+      throw InputError(where, "cannot be read as a Gmsh mesh (" + current_exception_message() +
+                                  "); expected a .msh file in format 2 or 4");
+    }
+    try {
+      mesh = read_open_model(path, dimension);
+    } catch (const InputError&) {
+      throw;
+    } catch (...) {
+      throw InputError(where,
+                       "cannot be read as a Gmsh mesh (" + current_exception_message() + ")");
+    }
+  }
+  try {
+    validate_mesh(mesh, path);
+  } catch (const InputError& error) {
+    // validate_mesh counts from 0; say how that maps onto the file.
+    throw InputError(std::string(error.what()) +
+                     " (cells and nodes are counted from 0, in the order of the file)");
+  }
+  return mesh;
+}
+
+}  // namespace geompm

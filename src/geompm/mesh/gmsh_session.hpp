@@ -1,0 +1,27 @@
+// One use of the Gmsh API at a time. Gmsh keeps its models and options in global state, so every
+// call into it from geompm goes through a GmshSession: it locks a process-wide mutex, initialises
+// Gmsh without reading command-line arguments or configuration files, silences its terminal
+// output, and finalises it when the session ends (also when an exception leaves the scope).
+#pragma once
+
+#include <mutex>
+#include <string>
+
+namespace geompm {
+
+class GmshSession {
+ public:
+  GmshSession();
+  ~GmshSession();
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+ private:
+  std::unique_lock<std::mutex> lock_;
+};
+
+/// Call inside a catch (...) block: the text of what Gmsh (or anything else) threw. Gmsh 4.8
+/// throws std::string with its last error; newer versions throw std::exception.
+std::string current_exception_message();
+
+}  // namespace geompm

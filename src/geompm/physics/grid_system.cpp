@@ -1,0 +1,476 @@
+#include "geompm/physics/grid_system.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/element.hpp"
+#include "geompm/physics/point_kernel.hpp"
+
+namespace geompm {
+
+namespace {
+
+template <class E>
+Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index c) {
+  Eigen::Matrix<double, E::nodes, E::dim> X;
+  const auto nodes = mesh.cell_nodes(c);
+  for (int a = 0; a < E::nodes; ++a) X.row(a) = mesh.nodes[nodes[a]].head<E::dim>().transpose();
+  return X;
+}
+
+}  // namespace
+
+GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
+                       const std::vector<const Material*>& materials,
+                       const GridSettings& settings)
+    : mesh_(mesh),
+      topology_(topology),
+      materials_(materials),
+      settings_(settings),
+      dim_(mesh.dim()),
+      nen_(mesh.nodes_per_cell()) {}
+
+// ---------------------------------------------------------------------------------------------
+// Phase 1: initialise
+// ---------------------------------------------------------------------------------------------
+
+void GridSystem::initialise(MaterialPoints& points) {
+  dispatch_cell_type(mesh_.cell_type, [&](auto e) { initialise_typed<decltype(e)>(points); });
+}
+
+template <class E>
+void GridSystem::initialise_typed(MaterialPoints& points) {
+  constexpr int nen = E::nodes, dim = E::dim;
+  points.sort_by_cell();
+  const Index n_points = points.size();
+  const Index n_cells = mesh_.num_cells();
+
+  // Active cells: occupied cells, then `buffer_layers` rings of neighbours (seed §3.2: empty
+  // buffer cells catch points that move out of the body, e.g. above a free surface).
+  std::vector<char> is_active(n_cells, 0);
+  std::vector<Index> frontier;
+  for (Index p = 0; p < n_points; ++p)
+    if (!is_active[points.cell[p]]) {
+      is_active[points.cell[p]] = 1;
+      frontier.push_back(points.cell[p]);
+    }
+  for (int layer = 0; layer < settings_.buffer_layers; ++layer) {
+    std::vector<Index> next;
+    for (Index c : frontier)
+      for (Index nb : topology_.cell_neighbours.row(c))
+        if (!is_active[nb]) {
+          is_active[nb] = 1;
+          next.push_back(nb);
+        }
+    frontier.swap(next);
+  }
+  active_cells_.clear();
+  for (Index c = 0; c < n_cells; ++c)
+    if (is_active[c]) active_cells_.push_back(c);
+
+  // Point ranges per active cell (points are sorted by cell).
+  const Index n_active = static_cast<Index>(active_cells_.size());
+  cell_point_begin_.assign(n_active, 0);
+  cell_point_end_.assign(n_active, 0);
+  {
+    Index p = 0;
+    for (Index ci = 0; ci < n_active; ++ci) {
+      const Index c = active_cells_[ci];
+      while (p < n_points && points.cell[p] < c) ++p;
+      cell_point_begin_[ci] = p;
+      while (p < n_points && points.cell[p] == c) ++p;
+      cell_point_end_[ci] = p;
+    }
+  }
+
+  // Active nodes.
+  node_to_active_.assign(mesh_.num_nodes(), -1);
+  active_nodes_.clear();
+  for (Index c : active_cells_)
+    for (Index node : mesh_.cell_nodes(c))
+      if (node_to_active_[node] < 0) node_to_active_[node] = 0;
+  for (Index node = 0; node < mesh_.num_nodes(); ++node)
+    if (node_to_active_[node] == 0) {
+      node_to_active_[node] = static_cast<Index>(active_nodes_.size());
+      active_nodes_.push_back(node);
+    }
+  colour_active_cells();
+
+  // Shape functions and reference gradients at each point, on the grid of this step.
+  shape_.assign(std::size_t(n_points) * nen, 0.0);
+  gradients_.assign(std::size_t(n_points) * nen * dim, 0.0);
+  cell_fill_.assign(n_active, 0.0);
+  cell_size_.assign(n_points, 0.0);
+  target_stiffness_.clear();
+  point_reaction_.clear();
+  const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
+#pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
+  for (Index ci = 0; ci < n_active; ++ci) {
+    const Index c = active_cells_[ci];
+    const auto X = cell_coordinates<E>(mesh_, c);
+    double occupied = 0.0;
+    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+      const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
+      Eigen::Map<typename E::Values>(shape_.data() + std::size_t(p) * nen) = s.N;
+      Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() +
+                                                  std::size_t(p) * nen * dim) = s.dN_dX;
+      occupied += points.volume[p];
+    }
+    cell_fill_[ci] = std::min(1.0, occupied / cell_measure(mesh_, c, radial));
+    const double size = std::pow(cell_measure(mesh_, c, false), 1.0 / dim);
+    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
+  }
+
+  // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
+  const Index n_dofs = num_dofs();
+  mass_ = Vector::Zero(n_dofs);
+  velocity_ = Vector::Zero(n_dofs);
+  acceleration_ = Vector::Zero(n_dofs);
+  for (Index p = 0; p < n_points; ++p) {
+    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    for (int a = 0; a < nen; ++a) {
+      const double w = points.mass[p] * shape_[std::size_t(p) * nen + a];
+      const Index base = node_to_active_[nodes[a]] * dim;
+      for (int i = 0; i < dim; ++i) {
+        mass_(base + i) += w;
+        velocity_(base + i) += w * points.velocity[p](i);
+        acceleration_(base + i) += w * points.acceleration[p](i);
+      }
+    }
+  }
+  const double tiny = 1e-14 * std::max(mass_.maxCoeff(), 0.0);
+  for (Index d = 0; d < n_dofs; ++d) {
+    if (mass_(d) > tiny) {
+      velocity_(d) /= mass_(d);
+      acceleration_(d) /= mass_(d);
+    } else {
+      velocity_(d) = acceleration_(d) = 0.0;
+    }
+  }
+
+  empty_cell_stiffness_typed<E>();
+
+  trial_.stress.resize(n_points);
+  trial_.F.resize(n_points);
+  trial_.be.resize(n_points);
+  trial_.internal.resize(n_points);
+  trial_.volume.resize(n_points);
+}
+
+void GridSystem::colour_active_cells() {
+  // Greedy colouring: a cell takes the smallest colour that no cell sharing a node has taken.
+  const Index n_active = static_cast<Index>(active_cells_.size());
+  std::vector<int> colour_of(mesh_.num_cells(), -1);
+  colours_.clear();
+  std::vector<char> used;
+  for (Index ci = 0; ci < n_active; ++ci) {
+    const Index c = active_cells_[ci];
+    used.assign(colours_.size() + 1, 0);
+    for (Index nb : topology_.cell_neighbours.row(c))
+      if (colour_of[nb] >= 0) used[colour_of[nb]] = 1;
+    int colour = 0;
+    while (used[colour]) ++colour;
+    colour_of[c] = colour;
+    if (colour == static_cast<int>(colours_.size())) colours_.emplace_back();
+    colours_[colour].push_back(ci);
+  }
+}
+
+template <class E>
+void GridSystem::empty_cell_stiffness_typed() {
+  // A small linear elastic stiffness in empty and partly filled cells keeps the system regular
+  // (seed §3.2). It is scaled by the empty fraction (1 - fill) of the cell, so full cells get
+  // none and it fades in as a cell empties. Small strain on the grid of the step, nu = 0.3.
+  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
+  using GC = GradientComponents<dim>;
+  constexpr int nc = GC::count;
+  const Index n_active = static_cast<Index>(active_cells_.size());
+  empty_stiffness_.assign(std::size_t(n_active) * n * n, 0.0);
+  if (settings_.empty_cell_modulus <= 0.0) return;
+  const double E_empty = settings_.empty_cell_modulus, nu = 0.3;
+  const Tensor4 C = isotropic_elasticity4(E_empty * nu / ((1 + nu) * (1 - 2 * nu)),
+                                          E_empty / (2 * (1 + nu)));
+  Eigen::Matrix<double, nc, nc> A;
+  for (int c = 0; c < nc; ++c)
+    for (int d = 0; d < nc; ++d)
+      A(c, d) = C(pair_index(GC::row[c], GC::col[c]), pair_index(GC::row[d], GC::col[d]));
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+#pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
+  for (Index ci = 0; ci < n_active; ++ci) {
+    const double weight = 1.0 - cell_fill_[ci];
+    if (weight <= 0.0) continue;
+    const auto X = cell_coordinates<E>(mesh_, active_cells_[ci]);
+    Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() + std::size_t(ci) * n * n);
+    for (int q = 0; q < E::quadrature_size(); ++q) {
+      const auto xi = E::quadrature_point(q);
+      const auto s = make_stencil<E>(X, xi);
+      const Eigen::Matrix<double, dim, dim> J = X.transpose() * E::shape_gradients(xi);
+      double dv = E::quadrature_weight(q) * std::abs(J.determinant());
+      const double r = s.N.dot(X.col(0));
+      if (axisymmetric) dv *= r;
+      Eigen::Matrix<double, nc, n> B = Eigen::Matrix<double, nc, n>::Zero();
+      for (int a = 0; a < nen; ++a)
+        for (int c = 0; c < nc; ++c)
+          if (GC::row[c] < dim && GC::col[c] < dim) B(c, a * dim + GC::row[c]) = s.dN_dX(a, GC::col[c]);
+      if (axisymmetric)
+        for (int a = 0; a < nen; ++a) B(nc - 1, a * dim) = s.N(a) / r;
+      K.noalias() += weight * dv * (B.transpose() * A * B);
+    }
+  }
+}
+
+Vector GridSystem::external_force(const MaterialPoints& points, const Vec3& gravity,
+                                  const std::vector<PointSetForce>& forces) const {
+  Vector f = Vector::Zero(num_dofs());
+  const Index n_points = points.size();
+  // Share of each point set's force per point: by mass, or by volume for a massless set.
+  std::vector<double> set_mass(forces.size(), 0.0), set_volume(forces.size(), 0.0);
+  for (std::size_t k = 0; k < forces.size(); ++k)
+    for (Index p = 0; p < n_points; ++p)
+      if (points.sets[p] >> forces[k].set & 1u) {
+        set_mass[k] += points.mass[p];
+        set_volume[k] += points.volume[p];
+      }
+  for (Index p = 0; p < n_points; ++p) {
+    Vec3 force = points.mass[p] * gravity;
+    for (std::size_t k = 0; k < forces.size(); ++k)
+      if (points.sets[p] >> forces[k].set & 1u)
+        force += forces[k].force * (set_mass[k] > 0 ? points.mass[p] / set_mass[k]
+                                                    : points.volume[p] / set_volume[k]);
+    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    for (int a = 0; a < nen_; ++a) {
+      const double N = shape_[std::size_t(p) * nen_ + a];
+      const Index base = node_to_active_[nodes[a]] * dim_;
+      for (int i = 0; i < dim_; ++i) f(base + i) += N * force(i);
+    }
+  }
+  return f;
+}
+
+void GridSystem::set_point_targets(std::vector<double> stiffness, std::vector<Vec3> target,
+                                   std::vector<unsigned char> mask) {
+  target_stiffness_ = std::move(stiffness);
+  target_ = std::move(target);
+  target_mask_ = std::move(mask);
+  point_reaction_.assign(target_stiffness_.size(), Vec3::Zero());
+}
+
+void GridSystem::set_constraints(const std::vector<char>& constrained) {
+  const Index n_dofs = num_dofs();
+  free_index_.assign(n_dofs, -1);
+  num_free_ = 0;
+  for (Index d = 0; d < n_dofs; ++d)
+    if (!constrained[d]) free_index_[d] = num_free_++;
+
+  // Pattern: free unknowns of nodes that share an active cell. Columns are built node by node,
+  // so the row indices of each column come out sorted.
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  std::vector<std::vector<Index>> neighbours(n_nodes);
+  for (Index c : active_cells_) {
+    const auto nodes = mesh_.cell_nodes(c);
+    for (Index a : nodes)
+      for (Index b : nodes) neighbours[node_to_active_[a]].push_back(node_to_active_[b]);
+  }
+  std::vector<int> outer(num_free_ + 1, 0);
+  std::vector<int> inner;
+  for (Index a = 0; a < n_nodes; ++a) {
+    auto& list = neighbours[a];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int i = 0; i < dim_; ++i) {
+      const Index col = free_index_[a * dim_ + i];
+      if (col < 0) continue;
+      for (Index b : list)
+        for (int k = 0; k < dim_; ++k) {
+          const Index row = free_index_[b * dim_ + k];
+          if (row >= 0) inner.push_back(row);
+        }
+      outer[col + 1] = static_cast<int>(inner.size());
+    }
+  }
+  pattern_ = SparseMatrix(num_free_, num_free_);
+  pattern_.resizeNonZeros(static_cast<Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
+
+  // Scatter maps: local (row, column) of each active cell -> position in the values array.
+  const int n = nen_ * dim_;
+  const Index n_active = static_cast<Index>(active_cells_.size());
+  scatter_.assign(std::size_t(n_active) * n * n, -1);
+#pragma omp parallel for schedule(dynamic, 64) if (n_active > 256)
+  for (Index ci = 0; ci < n_active; ++ci) {
+    const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
+    for (int lc = 0; lc < n; ++lc) {
+      const Index col = free_index_[node_to_active_[nodes[lc / dim_]] * dim_ + lc % dim_];
+      if (col < 0) continue;
+      const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
+      const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
+      for (int lr = 0; lr < n; ++lr) {
+        const Index row = free_index_[node_to_active_[nodes[lr / dim_]] * dim_ + lr % dim_];
+        if (row < 0) continue;
+        const int* at = std::lower_bound(begin, end, row);
+        scatter_[(std::size_t(ci) * n + lc) * n + lr] =
+            static_cast<int>(at - pattern_.innerIndexPtr());
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Phase 2: Lagrangian
+// ---------------------------------------------------------------------------------------------
+
+bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                                SparseMatrix* tangent) {
+  return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
+    return internal_force_typed<decltype(e)>(points, du, f_int, tangent);
+  });
+}
+
+template <class E>
+void GridSystem::add_target_spring(Index p, const typename E::Values& N,
+                                   const Eigen::Matrix<double, E::nodes, E::dim>& du,
+                                   bool with_tangent,
+                                   Eigen::Matrix<double, E::nodes * E::dim, 1>& f,
+                                   Eigen::Matrix<double, E::nodes * E::dim, E::nodes * E::dim>& K) {
+  // Penalty spring k (u_p - target) on the point's displacement increment u_p = N du: its force
+  // enters f_int and its stiffness k N N^T the tangent (docs/theory.md eq. 5.1).
+  constexpr int dim = E::dim;
+  const double k = target_stiffness_[p];
+  const Eigen::Matrix<double, dim, 1> u = du.transpose() * N;
+  Vec3 reaction = Vec3::Zero();
+  for (int i = 0; i < dim; ++i) {
+    if (!(target_mask_[p] >> i & 1u)) continue;
+    const double force = k * (u(i) - target_[p](i));
+    reaction(i) = -force;
+    for (int a = 0; a < E::nodes; ++a) {
+      f(a * dim + i) += force * N(a);
+      if (with_tangent)
+        for (int b = 0; b < E::nodes; ++b) K(a * dim + i, b * dim + i) += k * N(a) * N(b);
+    }
+  }
+  point_reaction_[p] = reaction;
+}
+
+template <class E>
+bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector& du,
+                                      Vector& f_int, SparseMatrix* tangent) {
+  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
+  f_int = Vector::Zero(num_dofs());
+  if (tangent) {
+    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows())
+      *tangent = pattern_;
+    std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
+  }
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  std::atomic<bool> admissible{true};
+  for (const auto& colour : colours_) {
+    const Index count = static_cast<Index>(colour.size());
+#pragma omp parallel for schedule(dynamic, 8) if (count > 64)
+    for (Index k = 0; k < count; ++k) {
+      const Index ci = colour[k];
+      const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
+      Eigen::Matrix<double, nen, dim> du_local;
+      Eigen::Matrix<double, n, 1> du_flat;
+      for (int a = 0; a < nen; ++a)
+        for (int i = 0; i < dim; ++i)
+          du_flat(a * dim + i) = du_local(a, i) = du(node_to_active_[nodes[a]] * dim + i);
+
+      const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(
+          empty_stiffness_.data() + std::size_t(ci) * n * n);
+      Eigen::Matrix<double, n, 1> f_cell = K_empty * du_flat;
+      Eigen::Matrix<double, n, n> K_cell = K_empty;
+
+      PointKernelResult<E> r;
+      PointStencil<E> s;
+      for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+        s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
+        s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(
+            gradients_.data() + std::size_t(p) * nen * dim);
+        const PointStartState start{materials_[points.material[p]],
+                                    points.position[p],
+                                    points.volume[p],
+                                    points.deformation_gradient[p],
+                                    points.elastic_left_cauchy_green[p],
+                                    points.internal[p]};
+        if (!integrate_point<E>(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
+          admissible = false;
+          continue;
+        }
+        f_cell += r.internal_force;
+        if (tangent) K_cell += r.stiffness;
+        if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+          add_target_spring<E>(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
+        trial_.stress[p] = r.state.cauchy_stress;
+        trial_.F[p] = r.state.deformation_gradient;
+        trial_.be[p] = r.state.elastic_left_cauchy_green;
+        trial_.internal[p] = r.state.internal;
+        trial_.volume[p] = r.volume;
+      }
+      for (int a = 0; a < nen; ++a)
+        for (int i = 0; i < dim; ++i) f_int(node_to_active_[nodes[a]] * dim + i) += f_cell(a * dim + i);
+      if (tangent) {
+        const int* map = scatter_.data() + std::size_t(ci) * n * n;
+        double* values = tangent->valuePtr();
+        for (int lc = 0; lc < n; ++lc)
+          for (int lr = 0; lr < n; ++lr) {
+            const int at = map[lc * n + lr];
+            if (at >= 0) values[at] += K_cell(lr, lc);
+          }
+      }
+    }
+  }
+  return admissible;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Phase 3: convect
+// ---------------------------------------------------------------------------------------------
+
+void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
+                         const Vector& acceleration, double dt, bool dynamic) const {
+  dispatch_cell_type(mesh_.cell_type, [&](auto e) {
+    convect_typed<decltype(e)>(points, du, velocity, acceleration, dt, dynamic);
+  });
+}
+
+template <class E>
+void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
+                               const Vector& acceleration, double dt, bool dynamic) const {
+  constexpr int nen = E::nodes, dim = E::dim;
+  const Index n_points = points.size();
+#pragma omp parallel for schedule(static) if (n_points > 4096)
+  for (Index p = 0; p < n_points; ++p) {
+    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    Vec3 dx = Vec3::Zero(), dv = Vec3::Zero(), a = Vec3::Zero();
+    for (int k = 0; k < nen; ++k) {
+      const double N = shape_[std::size_t(p) * nen + k];
+      const Index base = node_to_active_[nodes[k]] * dim;
+      for (int i = 0; i < dim; ++i) {
+        dx(i) += N * du(base + i);
+        dv(i) += N * (velocity(base + i) - velocity_(base + i));
+        a(i) += N * acceleration(base + i);
+      }
+    }
+    points.position[p] += dx;
+    points.displacement[p] += dx;
+    points.phase_displacement[p] += dx;
+    if (dynamic) {
+      points.velocity[p] += dv;  // FLIP: the grid's velocity change, not its velocity
+      points.acceleration[p] = a;
+    } else {
+      points.velocity[p] = dx / dt;
+      points.acceleration[p].setZero();
+    }
+    points.stress[p] = trial_.stress[p];
+    points.deformation_gradient[p] = trial_.F[p];
+    points.elastic_left_cauchy_green[p] = trial_.be[p];
+    points.internal[p] = trial_.internal[p];
+    points.volume[p] = trial_.volume[p];
+  }
+}
+
+}  // namespace geompm

@@ -1,0 +1,158 @@
+// The computational grid of one step (seed paper Fig. 1): built from the material points at the
+// start of the step (phase 1, initialise), deformed by Newton (phase 2, Lagrangian), and read back
+// into the points before it is reset (phase 3, convect).
+//
+// Unknowns are the nodal displacement increments of the step, numbered node-major over the
+// active nodes (index = active node * dim + component). The tangent is assembled only for the
+// free unknowns, into a pattern built once per step; assembly runs in parallel over cells of one
+// colour at a time (no two cells of a colour share a node), which also makes the sums
+// independent of the thread count.
+#pragma once
+
+#include <cstdint>
+#include <Eigen/Core>
+#include <vector>
+
+#include "geompm/mesh/mesh.hpp"
+#include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/materials/material.hpp"
+#include "geompm/points/material_points.hpp"
+#include "geompm/solver/linear_solver.hpp"
+
+namespace geompm {
+
+struct GridSettings {
+  Kinematics kinematics = Kinematics::PlaneStrain;
+  double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
+  int buffer_layers = 1;            // layers of empty cells activated around occupied cells
+};
+
+/// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
+/// proportion to the points' mass (volume if the set is massless).
+struct PointSetForce {
+  int set = 0;
+  Vec3 force = Vec3::Zero();
+};
+
+class GridSystem {
+ public:
+  GridSystem(const Mesh& mesh, const MeshTopology& topology,
+             const std::vector<const Material*>& materials, const GridSettings& settings);
+
+  // --- phase 1: initialise -------------------------------------------------------------
+  /// Sorts the points by cell, finds active cells (occupied + buffer) and nodes, colours the
+  /// cells, computes each point's shape functions and gradients, and maps mass, momentum and
+  /// acceleration to the nodes (seed eq. 9).
+  void initialise(MaterialPoints& points);
+  /// f_ext: gravity on the points' mass and point-set forces, dof-indexed.
+  Vector external_force(const MaterialPoints& points, const Vec3& gravity,
+                        const std::vector<PointSetForce>& forces) const;
+  /// Prescribed motion of points (docs/theory.md §5): point p is pulled towards its target
+  /// displacement increment of the step (components with mask bit i) by a penalty spring of
+  /// stiffness `stiffness[p]` (0: no target). Call after initialise(), before Newton.
+  void set_point_targets(std::vector<double> stiffness, std::vector<Vec3> target,
+                         std::vector<unsigned char> mask);
+  /// The force each point's target spring exerts on the body at the last evaluation (the
+  /// reaction of a prescribed motion, summed over a point set).
+  const std::vector<Vec3>& point_reactions() const { return point_reaction_; }
+
+  /// Marks the constrained unknowns; builds the free numbering, the tangent's pattern and the
+  /// cells' scatter maps.
+  void set_constraints(const std::vector<char>& constrained);
+
+  // --- phase 2: Lagrangian --------------------------------------------------------------
+  /// Internal force f_int(du) at every unknown and, if `tangent`, the tangent at the free
+  /// unknowns (material + geometric, seed eq. 10, plus the empty-cell stiffness). Stores each
+  /// point's trial state for convect(). False if a point's deformation is inadmissible.
+  bool internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                      SparseMatrix* tangent);
+
+  // --- phase 3: convect ------------------------------------------------------------------
+  /// Moves the points with the converged grid solution and commits their trial state; the
+  /// velocity and acceleration are updated from the nodal ones (FLIP increments; seed §2).
+  void convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
+               const Vector& acceleration, double dt, bool dynamic) const;
+
+  // --- grid data --------------------------------------------------------------------------
+  int dim() const { return dim_; }
+  Index num_dofs() const { return static_cast<Index>(active_nodes_.size()) * dim_; }
+  Index num_free() const { return num_free_; }
+  const std::vector<Index>& active_nodes() const { return active_nodes_; }
+  const std::vector<Index>& node_to_active() const { return node_to_active_; }
+  const std::vector<Index>& active_cells() const { return active_cells_; }
+  const std::vector<Index>& free_index() const { return free_index_; }  // dof -> free or -1
+  /// Lumped nodal mass per unknown, nodal velocity and acceleration at the start of the step.
+  const Vector& mass() const { return mass_; }
+  const Vector& velocity() const { return velocity_; }
+  const Vector& acceleration() const { return acceleration_; }
+  const SparseMatrix& pattern() const { return pattern_; }
+  /// Fraction of each active cell's volume covered by points (0 for buffer cells).
+  const std::vector<double>& cell_fill() const { return cell_fill_; }
+  /// A length per active cell: its size (area or volume)^(1/dim), for penalty scaling.
+  double cell_size(Index p) const { return cell_size_[p]; }
+  /// Shape values N_a of point p at its cell's nodes (valid after initialise()).
+  std::span<const double> shape_values(Index p) const {
+    return {shape_.data() + std::size_t(p) * nen_, std::size_t(nen_)};
+  }
+
+ private:
+  template <class E>
+  void initialise_typed(MaterialPoints& points);
+  template <class E>
+  bool internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                            SparseMatrix* tangent);
+  template <class E>
+  void convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
+                     const Vector& acceleration, double dt, bool dynamic) const;
+  template <class E>
+  void empty_cell_stiffness_typed();
+  template <class E>
+  void add_target_spring(Index p, const typename E::Values& N,
+                         const Eigen::Matrix<double, E::nodes, E::dim>& du, bool with_tangent,
+                         Eigen::Matrix<double, E::nodes * E::dim, 1>& f,
+                         Eigen::Matrix<double, E::nodes * E::dim, E::nodes * E::dim>& K);
+  void colour_active_cells();
+
+  const Mesh& mesh_;
+  const MeshTopology& topology_;
+  std::vector<const Material*> materials_;
+  GridSettings settings_;
+  int dim_, nen_;
+
+  std::vector<Index> active_cells_;
+  std::vector<Index> cell_point_begin_, cell_point_end_;  // into the cell-sorted points
+  std::vector<double> cell_fill_;
+  std::vector<double> cell_size_;  // per point: size of its cell
+  std::vector<Index> node_to_active_, active_nodes_;
+  std::vector<std::vector<Index>> colours_;  // positions in active_cells_
+
+  std::vector<double> shape_;      // nen per point
+  std::vector<double> gradients_;  // nen * dim per point (dN/dX at the start of the step)
+  Vector mass_, velocity_, acceleration_;
+
+  std::vector<double> target_stiffness_;  // per point; empty when no point has a target
+  std::vector<Vec3> target_;
+  std::vector<unsigned char> target_mask_;
+  std::vector<Vec3> point_reaction_;
+
+  std::vector<double> empty_stiffness_;  // (nen*dim)^2 per active cell, scaled by (1 - fill)
+
+  Index num_free_ = 0;
+  std::vector<Index> free_index_;
+  SparseMatrix pattern_;
+  std::vector<int> scatter_;  // (nen*dim)^2 per active cell: position in the values, or -1
+
+ public:
+  // Trial state of each point at the last evaluation (committed by convect()).
+  struct TrialState {
+    std::vector<Mat3> stress, F, be;
+    std::vector<InternalVariables> internal;
+    std::vector<double> volume;
+  };
+  const TrialState& trial() const { return trial_; }
+
+ private:
+  TrialState trial_;
+};
+
+}  // namespace geompm

@@ -1,0 +1,130 @@
+// The integration-point kernel of the Lagrangian phase (seed paper eqs. 5 and 10): from the
+// nodal displacement increments of one cell to the point's stress, its internal-force
+// contribution and its tangent-stiffness contribution. Templated on the element so that all
+// sizes are compile-time and the small matrices live on the stack (docs/architecture.md).
+//
+// One code path for plane strain, axisymmetry and 3D: the gradient of a nodal shape function is
+// written as a 3x3 tensor G^{a,i} = e_i (x) grad N_a, and in axisymmetry the radial degree of
+// freedom adds the hoop part (N_a / r) e_z (x) e_z (docs/theory.md eq. 2.7). Only the components
+// that can be non-zero are kept: (xx, xy, yx, yy, zz) in 2D and all nine in 3D.
+#pragma once
+
+#include <Eigen/LU>
+
+#include "geompm/mesh/element.hpp"
+#include "geompm/physics/finite_strain.hpp"
+
+namespace geompm {
+
+template <int Dim>
+struct GradientComponents;
+template <>
+struct GradientComponents<2> {
+  static constexpr int count = 5;
+  static constexpr int row[5] = {0, 0, 1, 1, 2};
+  static constexpr int col[5] = {0, 1, 0, 1, 2};
+};
+template <>
+struct GradientComponents<3> {
+  static constexpr int count = 9;
+  static constexpr int row[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+  static constexpr int col[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+};
+
+/// What a point knows of its cell during a step: shape values and reference gradients at the
+/// point's local coordinates on the grid as it was at the start of the step (fixed within the
+/// step, so computed once per step).
+template <class E>
+struct PointStencil {
+  typename E::Values N;
+  Eigen::Matrix<double, E::nodes, E::dim> dN_dX;
+};
+
+/// The start-of-step state a point brings into the kernel.
+struct PointStartState {
+  const Material* material;
+  Vec3 position;  // at the start of the step (the radius is position.x() in axisymmetry)
+  double volume;  // at the start of the step
+  Mat3 F;
+  Mat3 be;
+  InternalVariables internal;
+};
+
+template <class E>
+struct PointKernelResult {
+  static constexpr int n = E::nodes * E::dim;
+  Eigen::Matrix<double, n, 1> internal_force;
+  Eigen::Matrix<double, n, n> stiffness;
+  FiniteStrainState state;
+  double volume;  // current
+};
+
+/// du: the cell's nodal displacement increments, row a = node a. Returns false if the point's
+/// deformation is inadmissible (det dF <= 0): Newton then cuts the step back.
+template <class E>
+bool integrate_point(const PointStencil<E>& s, const PointStartState& p,
+                     const Eigen::Matrix<double, E::nodes, E::dim>& du, bool axisymmetric,
+                     bool want_tangent, PointKernelResult<E>& out) {
+  constexpr int dim = E::dim;
+  constexpr int nen = E::nodes;
+  using GC = GradientComponents<dim>;
+  constexpr int nc = GC::count;
+
+  // Incremental deformation gradient dF = I + d(du)/dX, with the hoop stretch r/R in
+  // axisymmetry (the out-of-plane stretch is 1 in plane strain).
+  Mat3 dF = Mat3::Identity();
+  const Eigen::Matrix<double, dim, dim> H = du.transpose() * s.dN_dX;
+  dF.template topLeftCorner<dim, dim>() += H;
+  double radius = 0.0;
+  if (axisymmetric) {
+    const double R = p.position.x();
+    radius = R + s.N.dot(du.col(0));
+    dF(2, 2) = radius / R;
+  }
+  if (!finite_strain_update(*p.material, dF, p.F, p.be, p.internal, want_tangent, out.state))
+    return false;
+
+  const double dJ = dF.determinant();
+  out.volume = p.volume * dJ;
+  const Eigen::Matrix<double, dim, dim> dF_inplane = dF.template topLeftCorner<dim, dim>();
+  const Eigen::Matrix<double, nen, dim> dN_dx = s.dN_dX * dF_inplane.inverse();
+
+  // B: row c = component (row[c], col[c]) of G^{a,i}; column a*dim + i.
+  Eigen::Matrix<double, nc, nen * dim> B = Eigen::Matrix<double, nc, nen * dim>::Zero();
+  for (int a = 0; a < nen; ++a)
+    for (int c = 0; c < nc; ++c) {
+      const int i = GC::row[c], j = GC::col[c];
+      if (i < dim && j < dim) B(c, a * dim + i) = dN_dx(a, j);
+    }
+  if (axisymmetric)
+    for (int a = 0; a < nen; ++a) B(nc - 1, a * dim + 0) = s.N(a) / radius;
+
+  Eigen::Matrix<double, nc, 1> sigma;
+  for (int c = 0; c < nc; ++c) sigma(c) = out.state.cauchy_stress(GC::row[c], GC::col[c]);
+  out.internal_force.noalias() = out.volume * (B.transpose() * sigma);
+
+  if (want_tangent) {
+    Eigen::Matrix<double, nc, nc> A;
+    for (int c = 0; c < nc; ++c)
+      for (int d = 0; d < nc; ++d)
+        A(c, d) = out.state.spatial_tangent(pair_index(GC::row[c], GC::col[c]),
+                                            pair_index(GC::row[d], GC::col[d]));
+    out.stiffness.noalias() = out.volume * (B.transpose() * (A * B));
+  }
+  return true;
+}
+
+/// Reference gradients of the shape functions at xi in a cell whose nodes are `X` (row a = node
+/// a, the grid at the start of the step): dN/dX = dN/dxi (dX/dxi)^-1.
+template <class E>
+PointStencil<E> make_stencil(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                             const typename E::Local& xi) {
+  PointStencil<E> s;
+  s.N = E::shape(xi);
+  const typename E::Gradients dN_dxi = E::shape_gradients(xi);
+  const Eigen::Matrix<double, E::dim, E::dim> J = X.transpose() * dN_dxi;  // dX/dxi
+  s.dN_dX = dN_dxi * J.inverse();
+  return s;
+}
+
+}  // namespace geompm

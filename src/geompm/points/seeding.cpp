@@ -1,0 +1,212 @@
+#include "geompm/points/seeding.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "geompm/mesh/element.hpp"
+
+namespace geompm {
+
+namespace {
+
+using Simplex2 = std::array<Eigen::Vector2d, 3>;
+using Simplex3 = std::array<Eigen::Vector3d, 4>;
+
+// k^2 sub-triangles of the reference triangle (vertices (0,0), (1,0), (0,1)).
+std::vector<Simplex2> split_triangle(int k) {
+  std::vector<Simplex2> out;
+  const double h = 1.0 / k;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; i + j < k; ++j) {
+      const Eigen::Vector2d o(i * h, j * h);
+      out.push_back({o, o + Eigen::Vector2d(h, 0), o + Eigen::Vector2d(0, h)});
+      if (i + j < k - 1)
+        out.push_back({o + Eigen::Vector2d(h, 0), o + Eigen::Vector2d(h, h),
+                       o + Eigen::Vector2d(0, h)});
+    }
+  return out;
+}
+
+// Each triangle split in three by its centroid.
+std::vector<Simplex2> split_by_centroid(const std::vector<Simplex2>& in) {
+  std::vector<Simplex2> out;
+  for (const auto& t : in) {
+    const Eigen::Vector2d c = (t[0] + t[1] + t[2]) / 3.0;
+    out.push_back({t[0], t[1], c});
+    out.push_back({t[1], t[2], c});
+    out.push_back({t[2], t[0], c});
+  }
+  return out;
+}
+
+std::vector<Simplex3> split_tetrahedron(int count) {
+  const Eigen::Vector3d v0(0, 0, 0), v1(1, 0, 0), v2(0, 1, 0), v3(0, 0, 1);
+  if (count == 1) return {{v0, v1, v2, v3}};
+  if (count == 4) {
+    const Eigen::Vector3d c = (v0 + v1 + v2 + v3) / 4.0;
+    return {{v1, v2, v3, c}, {v0, v3, v2, c}, {v0, v1, v3, c}, {v0, v2, v1, c}};
+  }
+  // Mid-edge (Freudenthal) split: four corner tetrahedra and the inner octahedron in four.
+  const Eigen::Vector3d m01 = (v0 + v1) / 2, m02 = (v0 + v2) / 2, m03 = (v0 + v3) / 2,
+                        m12 = (v1 + v2) / 2, m13 = (v1 + v3) / 2, m23 = (v2 + v3) / 2;
+  return {{v0, m01, m02, m03}, {m01, v1, m12, m13}, {m02, m12, v2, m23},
+          {m03, m13, m23, v3}, {m01, m02, m03, m13}, {m01, m02, m13, m12},
+          {m02, m03, m13, m23}, {m02, m12, m13, m23}};
+}
+
+int integer_root(int n, int power) {
+  for (int k = 1; k <= 8; ++k) {
+    int p = 1;
+    for (int i = 0; i < power; ++i) p *= k;
+    if (p == n) return k;
+  }
+  return -1;
+}
+
+template <class E>
+Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index c) {
+  Eigen::Matrix<double, E::nodes, E::dim> X;
+  const auto nodes = mesh.cell_nodes(c);
+  for (int a = 0; a < E::nodes; ++a) X.row(a) = mesh.nodes[nodes[a]].head<E::dim>().transpose();
+  return X;
+}
+
+// |dX/dxi| (times the radius in axisymmetry) at xi: the volume density in reference space.
+template <class E>
+double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                      const typename E::Local& xi, bool axisymmetric) {
+  const Eigen::Matrix<double, E::dim, E::dim> J = X.transpose() * E::shape_gradients(xi);
+  double d = std::abs(J.determinant());
+  if (axisymmetric) d *= E::shape(xi).dot(X.col(0));
+  return d;
+}
+
+template <class E>
+SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                     const typename E::Local& xi, double volume) {
+  SeedPoint p;
+  p.xi = Vec3::Zero();
+  p.xi.head<E::dim>() = xi;
+  p.position = Vec3::Zero();
+  p.position.head<E::dim>() = X.transpose() * E::shape(xi);
+  p.volume = volume;
+  return p;
+}
+
+template <class E>
+std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                                        int k, bool axisymmetric) {
+  // Sub-cells of [-1,1]^dim, each integrated with a 3-point Gauss rule per direction (exact
+  // for the bilinear/trilinear Jacobian times the radius).
+  constexpr int dim = E::dim;
+  const double gauss[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+  const double weight[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+  const double h = 2.0 / k;
+  std::vector<SeedPoint> out;
+  const int cells = dim == 2 ? k * k : k * k * k;
+  for (int s = 0; s < cells; ++s) {
+    const int idx[3] = {s % k, (s / k) % k, s / (k * k)};
+    typename E::Local centre;
+    for (int d = 0; d < dim; ++d) centre(d) = -1.0 + (idx[d] + 0.5) * h;
+    double volume = 0.0;
+    const int nq = dim == 2 ? 9 : 27;
+    for (int q = 0; q < nq; ++q) {
+      const int qi[3] = {q % 3, (q / 3) % 3, q / 9};
+      typename E::Local xi;
+      double w = 1.0;
+      for (int d = 0; d < dim; ++d) {
+        xi(d) = centre(d) + 0.5 * h * gauss[qi[d]];
+        w *= 0.5 * h * weight[qi[d]];
+      }
+      volume += w * volume_density<E>(X, xi, axisymmetric);
+    }
+    out.push_back(make_point<E>(X, centre, volume));
+  }
+  return out;
+}
+
+template <class E>
+std::vector<SeedPoint> seed_triangle(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                                     int count, bool axisymmetric) {
+  std::vector<Simplex2> parts;
+  if (integer_root(count, 2) > 0) {
+    parts = split_triangle(integer_root(count, 2));
+  } else {
+    parts = split_by_centroid(split_triangle(integer_root(count / 3, 2)));
+  }
+  // Degree-4 six-point rule (Dunavant) on each sub-triangle: exact for a Tri6 Jacobian times r.
+  const double a1 = 0.445948490915965, b1 = 0.091576213509771;
+  const double w1 = 0.223381589678011, w2 = 0.109951743655322;
+  const double bary[6][3] = {{a1, a1, 1 - 2 * a1}, {a1, 1 - 2 * a1, a1}, {1 - 2 * a1, a1, a1},
+                             {b1, b1, 1 - 2 * b1}, {b1, 1 - 2 * b1, b1}, {1 - 2 * b1, b1, b1}};
+  const double w[6] = {w1, w1, w1, w2, w2, w2};
+  std::vector<SeedPoint> out;
+  for (const auto& t : parts) {
+    const double area = 0.5 * std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() -
+                                       (t[2] - t[0]).x() * (t[1] - t[0]).y());
+    double volume = 0.0;
+    for (int q = 0; q < 6; ++q) {
+      const Eigen::Vector2d xi = bary[q][0] * t[0] + bary[q][1] * t[1] + bary[q][2] * t[2];
+      volume += w[q] * area * volume_density<E>(X, xi, axisymmetric);
+    }
+    out.push_back(make_point<E>(X, (t[0] + t[1] + t[2]) / 3.0, volume));
+  }
+  return out;
+}
+
+template <class E>
+std::vector<SeedPoint> seed_tetrahedron(const Eigen::Matrix<double, E::nodes, E::dim>& X,
+                                        int count) {
+  std::vector<SeedPoint> out;
+  for (const auto& t : split_tetrahedron(count)) {
+    Eigen::Matrix3d edges;
+    edges << t[1] - t[0], t[2] - t[0], t[3] - t[0];
+    const double reference_volume = std::abs(edges.determinant()) / 6.0;
+    const Eigen::Vector3d centre = (t[0] + t[1] + t[2] + t[3]) / 4.0;
+    // The Tet4 map is affine: the density is constant.
+    out.push_back(make_point<E>(X, centre,
+                                reference_volume * volume_density<E>(X, centre, false)));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<int> allowed_points_per_cell(CellType type) {
+  switch (type) {
+    case CellType::Quad4:
+      return {1, 4, 9, 16};
+    case CellType::Tri3:
+    case CellType::Tri6:
+      return {1, 3, 4, 9, 12, 16};
+    case CellType::Tet4:
+      return {1, 4, 8};
+    case CellType::Hex8:
+      return {1, 8, 27, 64};
+  }
+  return {};
+}
+
+std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axisymmetric) {
+  const auto allowed = allowed_points_per_cell(mesh.cell_type);
+  if (std::find(allowed.begin(), allowed.end(), count) == allowed.end())
+    throw std::invalid_argument(std::to_string(count) + " points per cell is not available for " +
+                                to_string(mesh.cell_type));
+  return dispatch_cell_type(mesh.cell_type, [&](auto element) -> std::vector<SeedPoint> {
+    using E = decltype(element);
+    const auto X = cell_coordinates<E>(mesh, c);
+    if constexpr (std::is_same_v<E, Element<CellType::Quad4>>)
+      return seed_tensor_cell<E>(X, integer_root(count, 2), axisymmetric);
+    else if constexpr (std::is_same_v<E, Element<CellType::Hex8>>)
+      return seed_tensor_cell<E>(X, integer_root(count, 3), false);
+    else if constexpr (std::is_same_v<E, Element<CellType::Tet4>>)
+      return seed_tetrahedron<E>(X, count);
+    else
+      return seed_triangle<E>(X, count, axisymmetric);
+  });
+}
+
+}  // namespace geompm

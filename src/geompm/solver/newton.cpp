@@ -1,0 +1,62 @@
+#include "geompm/solver/newton.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace geompm {
+
+NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
+                          const NewtonSettings& settings, Vector& x, SparseMatrix& tangent) {
+  NewtonResult result;
+  Vector residual;
+  double force_scale = 0.0;
+  double last_correction = 0.0;
+  bool analysed = false;
+  for (int k = 0;; ++k) {
+    if (!problem.evaluate(x, residual, force_scale, &tangent)) {
+      result.failure = "inadmissible deformation (a point's volume became <= 0)";
+      return result;
+    }
+    const double norm = residual.norm();
+    const double relative = norm / std::max(force_scale, 1e-300);
+    result.residuals.push_back(relative);
+    if (!std::isfinite(relative)) {
+      result.failure = "the residual is not finite";
+      return result;
+    }
+    const bool residual_ok = relative <= settings.residual_tolerance || norm == 0.0;
+    const bool correction_ok = k == 0 || last_correction <= settings.displacement_tolerance;
+    if (residual_ok && correction_ok) {
+      result.converged = true;
+      return result;
+    }
+    if (k > 0 && relative > settings.divergence_factor * std::max(result.residuals.front(), 1e-12)) {
+      result.failure = fmt::format("diverged (relative residual {:.3e})", relative);
+      return result;
+    }
+    if (k == settings.max_iterations) {
+      result.failure = fmt::format("no convergence in {} iterations (relative residual {:.3e})",
+                                   k, relative);
+      return result;
+    }
+    try {
+      if (!analysed) {
+        solver.analyze(tangent);
+        analysed = true;
+      }
+      solver.factorize(tangent);
+      const Vector dx = solver.solve(residual);
+      x += dx;
+      ++result.iterations;
+      const double scale = problem.increment_norm(x);
+      last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+      result.corrections.push_back(last_correction);
+    } catch (const LinearSolverFailure& e) {
+      result.failure = e.what();
+      return result;
+    }
+  }
+}
+
+}  // namespace geompm

@@ -1,0 +1,44 @@
+// Newton-Raphson for one step (seed paper eqs. 6-7): K dx = R, x += dx, until the residual is
+// small relative to the forces in play AND the last correction is small relative to the step's
+// increment. The solver knows vectors and a sparse matrix only; the physics is a
+// NonlinearProblem.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geompm/solver/linear_solver.hpp"
+
+namespace geompm {
+
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+  /// Residual R(x) (out-of-balance force at the free unknowns), a force scale for the relative
+  /// criterion, and the tangent K = -dR/dx when `tangent` is not null (its pattern fixed for the
+  /// step). Returns false if x is inadmissible (a point turned inside out).
+  virtual bool evaluate(const Vector& x, Vector& residual, double& force_scale,
+                        SparseMatrix* tangent) = 0;
+  /// Norm of the whole increment of the step at x (prescribed parts included).
+  virtual double increment_norm(const Vector& x) const = 0;
+};
+
+struct NewtonSettings {
+  int max_iterations = 15;
+  double residual_tolerance = 1e-8;
+  double displacement_tolerance = 1e-8;
+  double divergence_factor = 1e8;  // residual growth over the first residual that counts as divergence
+};
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;                   // linear solves
+  std::vector<double> residuals;        // relative residual before each solve, and the last
+  std::vector<double> corrections;      // relative size of each correction
+  std::string failure;                  // why it did not converge
+};
+
+NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
+                          const NewtonSettings& settings, Vector& x, SparseMatrix& tangent);
+
+}  // namespace geompm

@@ -1,0 +1,53 @@
+// Runs a model file of examples/ through the library, as `geompm run` does, into a fresh
+// temporary directory, and reads back its history.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "geompm/analysis/model.hpp"
+#include "geompm/analysis/run.hpp"
+#include "geompm/io/history_writer.hpp"
+#include "geompm/io/model_reader.hpp"
+
+namespace geompm::testing {
+
+inline std::filesystem::path fresh_directory(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("geompm_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+struct ModelRun {
+  std::unique_ptr<Model> model;
+  RunSummary summary;
+  CsvTable history;
+  std::filesystem::path output;
+
+  std::vector<double> column(const std::string& name) const {
+    const std::size_t c = history.column(name, "history.csv");
+    std::vector<double> v;
+    for (const auto& row : history.rows) v.push_back(row[c]);
+    return v;
+  }
+};
+
+/// Runs `spec` (possibly edited by the test) and returns the model, summary and history.
+inline ModelRun run_spec(const spec::Model& spec, const std::string& name) {
+  ModelRun r;
+  r.model = build_model(spec);
+  r.output = fresh_directory(name);
+  RunOptions options;
+  options.output_dir = r.output;
+  options.progress = false;
+  r.summary = run_analysis(*r.model, options);
+  r.history = read_csv(r.output / "history.csv");
+  return r;
+}
+
+inline spec::Model read_example(const std::string& relative) {
+  return read_model(std::string(GEOMPM_SOURCE_DIR) + "/examples/" + relative);
+}
+
+}  // namespace geompm::testing

@@ -1,0 +1,270 @@
+// Gmsh: generation of unstructured meshes, import, and the errors a user sees for bad files.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "geompm/core/error.hpp"
+#include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/gmsh_generate.hpp"
+#include "geompm/mesh/gmsh_import.hpp"
+#include "mesh_test_support.hpp"
+
+namespace geompm {
+namespace {
+
+using testing::TemporaryDirectory;
+using testing::total_measure;
+
+void expect_groups_on_their_sides(const Mesh& mesh, const Vec3& lower, const Vec3& upper) {
+  struct Side {
+    const char* name;
+    int axis;
+    double at;
+  };
+  std::vector<Side> sides = {{"left", 0, lower[0]}, {"right", 0, upper[0]}};
+  if (mesh.dim() == 3)
+    sides.insert(sides.end(), {{"front", 1, lower[1]},
+                               {"back", 1, upper[1]},
+                               {"bottom", 2, lower[2]},
+                               {"top", 2, upper[2]}});
+  else
+    sides.insert(sides.end(), {{"bottom", 1, lower[1]}, {"top", 1, upper[1]}});
+  for (const Side& side : sides) {
+    ASSERT_TRUE(mesh.node_groups.count(side.name)) << side.name;
+    const std::vector<Index>& ids = mesh.node_groups.at(side.name);
+    EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
+    std::size_t expected = 0;  // every node on that side, and no other
+    for (const Vec3& x : mesh.nodes) expected += std::abs(x[side.axis] - side.at) < 1e-12;
+    EXPECT_EQ(ids.size(), expected) << side.name;
+    for (Index n : ids) EXPECT_NEAR(mesh.nodes[n][side.axis], side.at, 1e-12) << side.name;
+  }
+  ASSERT_TRUE(mesh.cell_groups.count("all"));
+  EXPECT_EQ(static_cast<Index>(mesh.cell_groups.at("all").size()), mesh.num_cells());
+}
+
+TEST(GmshTest, RectangleRoundTripForEveryTwoDimensionalType) {
+  TemporaryDirectory directory;
+  const Vec3 origin(-1.0, 0.5, 0.0), size(3.0, 2.0, 0.0);
+  for (CellType type : {CellType::Tri3, CellType::Quad4, CellType::Tri6}) {
+    SCOPED_TRACE(to_string(type));
+    const auto file = directory.path() / (std::string(to_string(type)) + ".msh");
+    write_gmsh_rectangle(file, origin, size, 0.25, type);
+    std::ifstream text(file);
+    std::string first, version;
+    text >> first >> version;
+    EXPECT_EQ(first, "$MeshFormat");
+    EXPECT_EQ(version, "4.1");
+
+    const Mesh mesh = read_gmsh_mesh(file.string(), 2);
+    EXPECT_EQ(mesh.cell_type, type);
+    EXPECT_GT(mesh.num_cells(), 50);
+    EXPECT_NEAR(total_measure(mesh), 6.0, 1e-10);
+    // int x dA over [-1, 2] x [0.5, 2.5]: (4 - 1) / 2 * 2.
+    EXPECT_NEAR(total_measure(mesh, true), 3.0, 1e-10);
+    EXPECT_NO_THROW(validate_mesh(mesh, file.string()));
+    expect_groups_on_their_sides(mesh, origin, origin + size);
+    // Compact numbering: every node is used by a cell.
+    std::vector<char> used(mesh.nodes.size(), 0);
+    for (Index n : mesh.connectivity) used[n] = 1;
+    EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0);
+  }
+}
+
+TEST(GmshTest, RefinementBoxMakesSmallerCellsInside) {
+  for (CellType type : {CellType::Tri3, CellType::Quad4}) {
+    const Mesh& mesh = testing::gmsh_mesh(type);  // h = 0.15 outside, 0.05 in the box
+    double inside = 0.0, outside = 0.0;
+    int count_inside = 0, count_outside = 0;
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const Vec3 centre = map_to_physical(mesh, c, Vec3(0.3, 0.3, 0.0));
+      const bool in_box =
+          centre[0] > 0.55 && centre[0] < 0.95 && centre[1] > 0.25 && centre[1] < 0.55;
+      const bool far = centre[0] > 1.5;
+      if (in_box) inside += cell_measure(mesh, c), ++count_inside;
+      if (far) outside += cell_measure(mesh, c), ++count_outside;
+    }
+    ASSERT_GT(count_inside, 0);
+    ASSERT_GT(count_outside, 0);
+    EXPECT_LT(inside / count_inside, 0.3 * outside / count_outside) << to_string(type);
+    EXPECT_NEAR(total_measure(mesh), 2.0, 1e-10);
+  }
+}
+
+TEST(GmshTest, BoxRoundTripWithTetrahedra) {
+  TemporaryDirectory directory;
+  const Vec3 origin(1.0, -1.0, -2.0), size(2.0, 1.0, 1.5);
+  const auto file = directory.path() / "box.msh";
+  write_gmsh_box(file, origin, size, 0.3);
+  const Mesh mesh = read_gmsh_mesh(file.string(), 3);
+  EXPECT_EQ(mesh.cell_type, CellType::Tet4);
+  EXPECT_GT(mesh.num_cells(), 100);
+  EXPECT_NEAR(total_measure(mesh), 3.0, 1e-10);
+  expect_groups_on_their_sides(mesh, origin, origin + size);
+  // Read as 2D the file has triangles (the boundary faces), which geompm takes as the mesh
+  // only when asked for 2D; they are not in the plane z = 0, so that is refused.
+  EXPECT_THROW(read_gmsh_mesh(file.string(), 2), InputError);
+}
+
+TEST(GmshTest, GeneratorsRejectBadArguments) {
+  TemporaryDirectory directory;
+  const auto file = directory.path() / "bad.msh";
+  EXPECT_THROW(write_gmsh_rectangle(file, Vec3::Zero(), Vec3(1, 0, 0), 0.1, CellType::Tri3),
+               std::invalid_argument);
+  EXPECT_THROW(write_gmsh_rectangle(file, Vec3::Zero(), Vec3(1, 1, 0), 0.0, CellType::Tri3),
+               std::invalid_argument);
+  EXPECT_THROW(write_gmsh_rectangle(file, Vec3::Zero(), Vec3(1, 1, 0), 0.1, CellType::Hex8),
+               std::invalid_argument);
+  EXPECT_THROW(write_gmsh_rectangle(file, Vec3::Zero(), Vec3(1, 1, 0), 0.1, CellType::Tri3,
+                                    RefineBox{Vec3::Zero(), Vec3::Ones()}, 0.0),
+               std::invalid_argument);
+  EXPECT_THROW(write_gmsh_box(file, Vec3::Zero(), Vec3(1, 1, 1), 0.1, CellType::Hex8),
+               std::invalid_argument);
+  EXPECT_THROW(write_gmsh_box(file, Vec3::Zero(), Vec3(1, 1, -1), 0.1), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+// ---- Import errors: hand-written files in Gmsh format 4.1 ASCII. ----
+
+std::string write_file(const TemporaryDirectory& directory, const std::string& name,
+                       const std::string& text) {
+  const auto path = directory.path() / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+/// The message of the InputError thrown by read_gmsh_mesh; fails the test if none is thrown.
+std::string import_error(const std::string& path, int dimension) {
+  try {
+    read_gmsh_mesh(path, dimension);
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(path), std::string::npos) << "the message names the file: " << message;
+    return message;
+  } catch (const std::exception& error) {
+    ADD_FAILURE() << "expected an InputError, got: " << error.what();
+    return "";
+  }
+  ADD_FAILURE() << "read_gmsh_mesh accepted " << path;
+  return "";
+}
+
+/// A unit square as two triangles (nodes 1-4) with the elements given, one entity block.
+std::string square_file(const std::string& z, const std::string& element_block) {
+  return "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+         "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+         "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+         "0 0 0\n1 0 0\n1 1 " +
+         z + "\n0 1 0\n$EndNodes\n" + element_block;
+}
+
+const std::string two_triangles = "$Elements\n1 2 1 2\n2 1 2 2\n1 1 2 3\n2 1 3 4\n$EndElements\n";
+
+TEST(GmshImportTest, HandWrittenFileReadsWithUnnamedGroup) {
+  TemporaryDirectory directory;
+  const std::string path = write_file(directory, "good.msh", square_file("0", two_triangles));
+  const Mesh mesh = read_gmsh_mesh(path, 2);
+  EXPECT_EQ(mesh.cell_type, CellType::Tri3);
+  EXPECT_EQ(mesh.num_nodes(), 4);
+  EXPECT_EQ(mesh.num_cells(), 2);
+  EXPECT_EQ(mesh.connectivity, (std::vector<Index>{0, 1, 2, 0, 2, 3}));  // tags 1..4 -> 0..3
+  ASSERT_TRUE(mesh.cell_groups.count("group_7"));
+  EXPECT_EQ(mesh.cell_groups.at("group_7"), (std::vector<Index>{0, 1}));
+}
+
+TEST(GmshImportTest, MissingFile) {
+  TemporaryDirectory directory;
+  const std::string message = import_error((directory.path() / "none.msh").string(), 2);
+  EXPECT_NE(message.find("not found"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, FileThatIsNotAMesh) {
+  TemporaryDirectory directory;
+  const std::string path = write_file(directory, "text.msh", "hello world\nthis is not a mesh\n");
+  EXPECT_FALSE(import_error(path, 2).empty());
+  // A well-formed mesh file that holds no cells.
+  const std::string empty =
+      write_file(directory, "empty.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  const std::string message = import_error(empty, 2);
+  EXPECT_NE(message.find("no 2D cells"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, InvertedCellIsNamedWithItsNodes) {
+  TemporaryDirectory directory;
+  // The second triangle runs 1-4-3: clockwise.
+  const std::string path =
+      write_file(directory, "inverted.msh",
+                 square_file("0", "$Elements\n1 2 1 2\n2 1 2 2\n1 1 2 3\n2 1 4 3\n$EndElements\n"));
+  const std::string message = import_error(path, 2);
+  EXPECT_NE(message.find("cell 1 "), std::string::npos) << message;
+  EXPECT_NE(message.find("(0, 1)"), std::string::npos) << message;
+  EXPECT_NE(message.find("inverted"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, TwoDimensionalMeshOutOfPlane) {
+  TemporaryDirectory directory;
+  const std::string path = write_file(directory, "tilted.msh", square_file("0.25", two_triangles));
+  const std::string message = import_error(path, 2);
+  EXPECT_NE(message.find("z = 0.25"), std::string::npos) << message;
+  EXPECT_NE(message.find("Gmsh node 3 "), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, MixedCellTypes) {
+  TemporaryDirectory directory;
+  // Nodes 1-4 (square) plus 5-6: a quadrangle 2-5-6-3 next to triangle 1-2-3.
+  const std::string path =
+      write_file(directory, "mixed.msh",
+                 "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                 "$Nodes\n1 6 1 6\n2 1 0 6\n1\n2\n3\n4\n5\n6\n"
+                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n$EndNodes\n"
+                 "$Elements\n2 2 1 2\n2 1 2 1\n1 1 2 3\n2 1 3 1\n2 2 5 6 3\n$EndElements\n");
+  const std::string message = import_error(path, 2);
+  EXPECT_NE(message.find("mixed"), std::string::npos) << message;
+  EXPECT_NE(message.find("tri3"), std::string::npos) << message;
+  EXPECT_NE(message.find("quad4"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, UnsupportedCellType) {
+  TemporaryDirectory directory;
+  // One 9-node quadrangle (Gmsh type 10) on a 3 x 3 grid of nodes.
+  std::string nodes = "$Nodes\n1 9 1 9\n2 1 0 9\n";
+  for (int n = 1; n <= 9; ++n) nodes += std::to_string(n) + "\n";
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      nodes += std::to_string(0.5 * i) + " " + std::to_string(0.5 * j) + " 0\n";
+  const std::string path = write_file(
+      directory, "quad9.msh",
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + nodes +
+          "$EndNodes\n$Elements\n1 1 1 1\n2 1 10 1\n1 1 3 9 7 2 6 8 4 5\n$EndElements\n");
+  const std::string message = import_error(path, 2);
+  EXPECT_NE(message.find("unsupported"), std::string::npos) << message;
+  EXPECT_NE(message.find("10"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, NoCellsOfTheRequestedDimension) {
+  TemporaryDirectory directory;
+  const std::string path = write_file(directory, "flat.msh", square_file("0", two_triangles));
+  const std::string message = import_error(path, 3);
+  EXPECT_NE(message.find("no 3D cells"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, DimensionMustBeTwoOrThree) {
+  TemporaryDirectory directory;
+  const std::string path = write_file(directory, "good.msh", square_file("0", two_triangles));
+  EXPECT_FALSE(import_error(path, 1).empty());
+}
+
+TEST(GmshImportTest, ImportIsRepeatableAfterAnError) {
+  // A failed import must leave Gmsh ready for the next one (the session is cleaned up).
+  TemporaryDirectory directory;
+  const std::string bad = write_file(directory, "bad.msh", "hello world\n");
+  const std::string good = write_file(directory, "good.msh", square_file("0", two_triangles));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_THROW(read_gmsh_mesh(bad, 2), InputError);
+    EXPECT_EQ(read_gmsh_mesh(good, 2).num_cells(), 2);
+  }
+}
+
+}  // namespace
+}  // namespace geompm

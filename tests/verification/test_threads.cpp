@@ -1,0 +1,36 @@
+// Results do not depend on the number of threads: assembly runs over cells of one colour at a
+// time, so every sum is taken in the same order (docs/architecture.md).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include "run_model.hpp"
+
+namespace geompm {
+namespace {
+
+TEST(Threads, OneAndTwoThreadsGiveIdenticalResults) {
+  // The oedometer on a mesh large enough that every parallel loop runs in parallel.
+  auto spec = testing::read_example("oedometer/oedometer.yaml");
+  auto& grid = *spec.mesh.generate;
+  grid.axes[0] = {AxisSegment{1.0, 48, 1.0}};
+  grid.axes[1] = {AxisSegment{1.25, 60, 1.0}};
+  spec.point_sets.at(0).region.min.y() = 0.99;
+  spec.phases.at(0).duration = 0.3;
+  omp_set_num_threads(1);
+  const auto one = testing::run_spec(spec, "threads_1");
+  omp_set_num_threads(2);
+  const auto two = testing::run_spec(spec, "threads_2");
+  omp_set_num_threads(omp_get_num_procs());
+  ASSERT_GT(one.model->points.size(), 4096);
+  ASSERT_EQ(one.model->points.size(), two.model->points.size());
+  double worst = 0.0;
+  for (Index p = 0; p < one.model->points.size(); ++p) {
+    worst = std::max(worst, (one.model->points.stress[p] - two.model->points.stress[p]).norm());
+    worst = std::max(worst, (one.model->points.position[p] - two.model->points.position[p]).norm());
+  }
+  EXPECT_EQ(worst, 0.0);
+  EXPECT_EQ(one.history.rows, two.history.rows);
+}
+
+}  // namespace
+}  // namespace geompm
