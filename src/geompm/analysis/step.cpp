@@ -13,6 +13,7 @@ GridSettings grid_settings(const Model& model) {
   s.kinematics = model.kinematics();
   s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * model.largest_modulus();
   s.buffer_layers = model.spec.numerics.buffer_layers;
+  s.dual_domain = model.spec.numerics.interpolation == spec::Interpolation::DualDomain;
   return s;
 }
 

@@ -153,8 +153,13 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 
 spec::Numerics read_numerics(const yaml::Node& node) {
   const yaml::Map section =
-      node.map({"empty_cell_stiffness", "buffer_layers", "lost_points", "linear_solver"});
+      node.map({"interpolation", "empty_cell_stiffness", "buffer_layers", "lost_points",
+                "linear_solver"});
   spec::Numerics numerics;
+  if (auto interpolation = section.find("interpolation"))
+    numerics.interpolation = interpolation->choice({"standard", "ddmp"}) == "ddmp"
+                                 ? spec::Interpolation::DualDomain
+                                 : spec::Interpolation::Standard;
   if (auto stiffness = section.find("empty_cell_stiffness"))
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
   if (auto layers = section.find("buffer_layers")) {

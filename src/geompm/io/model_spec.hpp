@@ -153,7 +153,12 @@ struct Output {
 
 enum class LostPointPolicy { Stop, Remove };
 
+/// How a point sees the grid: standard MPM shape functions of its cell, or the dual domain
+/// material point method (DDMP, seed §3.6; docs/theory.md §8) with smoothed gradients.
+enum class Interpolation { Standard, DualDomain };
+
 struct Numerics {
+  Interpolation interpolation = Interpolation::Standard;
   double empty_cell_stiffness = 1e-6;  // relative to the largest Young's modulus
   int buffer_layers = 1;               // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;

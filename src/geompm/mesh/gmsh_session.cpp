@@ -2,6 +2,7 @@
 
 #include <gmsh.h>
 
+#include <clocale>
 #include <exception>
 
 namespace geompm {
@@ -14,12 +15,14 @@ std::mutex& gmsh_mutex() {
 }  // namespace
 
 GmshSession::GmshSession() : lock_(gmsh_mutex()) {
+  if (const char* locale = std::setlocale(LC_NUMERIC, nullptr)) numeric_locale_ = locale;
   gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
   try {
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.Verbosity", 0);
   } catch (...) {
     gmsh::finalize();
+    std::setlocale(LC_NUMERIC, numeric_locale_.c_str());
     throw;
   }
 }
@@ -29,6 +32,7 @@ GmshSession::~GmshSession() {
     gmsh::finalize();
   } catch (...) {  // nothing sensible to do in a destructor; the next session re-initialises
   }
+  if (!numeric_locale_.empty()) std::setlocale(LC_NUMERIC, numeric_locale_.c_str());
 }
 
 std::string current_exception_message() {

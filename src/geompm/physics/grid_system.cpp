@@ -20,6 +20,22 @@ Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index
   return X;
 }
 
+// A bubble over the reference cell: 1 at the centre, 0 on the cell boundary (DDMP blending).
+double cell_bubble(CellType type, const Vec3& xi) {
+  switch (type) {
+    case CellType::Tri3:
+    case CellType::Tri6:
+      return 27.0 * xi(0) * xi(1) * (1.0 - xi(0) - xi(1));
+    case CellType::Quad4:
+      return (1.0 - xi(0) * xi(0)) * (1.0 - xi(1) * xi(1));
+    case CellType::Tet4:
+      return 256.0 * xi(0) * xi(1) * xi(2) * (1.0 - xi(0) - xi(1) - xi(2));
+    case CellType::Hex8:
+      return (1.0 - xi(0) * xi(0)) * (1.0 - xi(1) * xi(1)) * (1.0 - xi(2) * xi(2));
+  }
+  return 0.0;
+}
+
 }  // namespace
 
 GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
@@ -151,6 +167,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   }
 
   empty_cell_stiffness_typed<E>();
+  if (settings_.dual_domain) build_dual_domain_stencils<E>(points);
 
   trial_.stress.resize(n_points);
   trial_.F.resize(n_points);
@@ -273,6 +290,11 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
     for (Index a : nodes)
       for (Index b : nodes) neighbours[node_to_active_[a]].push_back(node_to_active_[b]);
   }
+  if (settings_.dual_domain)
+    for (std::size_t p = 0; p + 1 < stencil_start_.size(); ++p)
+      for (Index a = stencil_start_[p]; a < stencil_start_[p + 1]; ++a)
+        for (Index b = stencil_start_[p]; b < stencil_start_[p + 1]; ++b)
+          neighbours[stencil_nodes_[a]].push_back(stencil_nodes_[b]);
   std::vector<int> outer(num_free_ + 1, 0);
   std::vector<int> inner;
   for (Index a = 0; a < n_nodes; ++a) {
@@ -330,26 +352,24 @@ bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, 
   });
 }
 
-template <class E>
-void GridSystem::add_target_spring(Index p, const typename E::Values& N,
-                                   const Eigen::Matrix<double, E::nodes, E::dim>& du,
-                                   bool with_tangent,
-                                   Eigen::Matrix<double, E::nodes * E::dim, 1>& f,
-                                   Eigen::Matrix<double, E::nodes * E::dim, E::nodes * E::dim>& K) {
+template <int NS, int Dim, class Force, class Stiffness>
+void GridSystem::add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
+                                   const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent,
+                                   Force& f, Stiffness& K) {
   // Penalty spring k (u_p - target) on the point's displacement increment u_p = N du: its force
   // enters f_int and its stiffness k N N^T the tangent (docs/theory.md eq. 5.1).
-  constexpr int dim = E::dim;
   const double k = target_stiffness_[p];
-  const Eigen::Matrix<double, dim, 1> u = du.transpose() * N;
+  const Eigen::Matrix<double, Dim, 1> u = du.transpose() * N;
+  const int nodes = static_cast<int>(N.size());
   Vec3 reaction = Vec3::Zero();
-  for (int i = 0; i < dim; ++i) {
+  for (int i = 0; i < Dim; ++i) {
     if (!(target_mask_[p] >> i & 1u)) continue;
     const double force = k * (u(i) - target_[p](i));
     reaction(i) = -force;
-    for (int a = 0; a < E::nodes; ++a) {
-      f(a * dim + i) += force * N(a);
+    for (int a = 0; a < nodes; ++a) {
+      f(a * Dim + i) += force * N(a);
       if (with_tangent)
-        for (int b = 0; b < E::nodes; ++b) K(a * dim + i, b * dim + i) += k * N(a) * N(b);
+        for (int b = 0; b < nodes; ++b) K(a * Dim + i, b * Dim + i) += k * N(a) * N(b);
     }
   }
   point_reaction_[p] = reaction;
@@ -386,7 +406,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
 
       PointKernelResult<E> r;
       PointStencil<E> s;
-      for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+      const Index point_end = settings_.dual_domain ? cell_point_begin_[ci] : cell_point_end_[ci];
+      for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(
             gradients_.data() + std::size_t(p) * nen * dim);
@@ -396,14 +417,14 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
                                     points.deformation_gradient[p],
                                     points.elastic_left_cauchy_green[p],
                                     points.internal[p]};
-        if (!integrate_point<E>(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
+        if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
           admissible = false;
           continue;
         }
         f_cell += r.internal_force;
         if (tangent) K_cell += r.stiffness;
         if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-          add_target_spring<E>(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
+          add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
         trial_.stress[p] = r.state.cauchy_stress;
         trial_.F[p] = r.state.deformation_gradient;
         trial_.be[p] = r.state.elastic_left_cauchy_green;
@@ -423,7 +444,141 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       }
     }
   }
+  if (settings_.dual_domain && !dual_domain_point_forces<dim>(points, du, f_int, tangent))
+    return false;
   return admissible;
+}
+
+// ---------------------------------------------------------------------------------------------
+// DDMP: smoothed gradients over a wider stencil (docs/theory.md §8)
+// ---------------------------------------------------------------------------------------------
+
+template <class E>
+void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
+  // Node-averaged gradients (Zhang, Ma & Giguere 2011, J. Comput. Phys. 230): for node j,
+  //   G_ij = sum_q v_q N_j(x_q) grad N_i(x_q) / sum_q v_q N_j(x_q)      (theory eq. 8.1)
+  // over the points q around j, and at a point p the gradient of N_i becomes
+  //   grad~ N_i(x_p) = alpha grad N_i(x_p) + (1 - alpha) sum_j N_j(x_p) G_ij   (theory eq. 8.2)
+  // with alpha a bubble of the cell (1 at its centre, 0 on its boundary): the cell's own gradient
+  // keeps the smoothed field free of zero-energy (checkerboard) modes, and vanishes where a
+  // point crosses into the next cell, so the point's forces change continuously. Exact for
+  // linear fields.
+  constexpr int nen = E::nodes, dim = E::dim;
+  using Gradient = Eigen::Matrix<double, dim, 1>;
+  const Index n_points = points.size();
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  std::vector<double> weight(n_nodes, 0.0);
+  std::vector<std::vector<std::pair<Index, Gradient>>> G(n_nodes);
+  for (Index q = 0; q < n_points; ++q) {
+    const auto nodes = mesh_.cell_nodes(points.cell[q]);
+    const double* N = shape_.data() + std::size_t(q) * nen;
+    const Eigen::Map<const Eigen::Matrix<double, nen, dim>> dN(gradients_.data() +
+                                                              std::size_t(q) * nen * dim);
+    for (int a = 0; a < nen; ++a) {
+      const Index j = node_to_active_[nodes[a]];
+      const double w = points.volume[q] * N[a];
+      weight[j] += w;
+      auto& row = G[j];
+      for (int b = 0; b < nen; ++b) {
+        const Index i = node_to_active_[nodes[b]];
+        auto it = std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == i; });
+        if (it == row.end()) row.emplace_back(i, w * dN.row(b).transpose());
+        else it->second += w * dN.row(b).transpose();
+      }
+    }
+  }
+
+  stencil_start_.assign(n_points + 1, 0);
+  stencil_nodes_.clear();
+  stencil_N_.clear();
+  stencil_gradients_.clear();
+  std::vector<std::pair<Index, Gradient>> entries;
+  for (Index p = 0; p < n_points; ++p) {
+    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    const double* N = shape_.data() + std::size_t(p) * nen;
+    const Eigen::Map<const Eigen::Matrix<double, nen, dim>> dN(gradients_.data() +
+                                                              std::size_t(p) * nen * dim);
+    entries.clear();
+    const double alpha = std::clamp(cell_bubble(mesh_.cell_type, points.local[p]), 0.0, 1.0);
+    auto add = [&](Index i, const Gradient& g) {
+      auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.first == i; });
+      if (it == entries.end()) entries.emplace_back(i, g);
+      else it->second += g;
+    };
+    for (int a = 0; a < nen; ++a) {
+      const Index j = node_to_active_[nodes[a]];
+      if (weight[j] > 0.0) {
+        for (const auto& [i, g] : G[j]) add(i, ((1.0 - alpha) * N[a] / weight[j]) * g);
+      } else {
+        // No point weighs on node j: its share falls back to the point's own gradient.
+        for (int b = 0; b < nen; ++b)
+          add(node_to_active_[nodes[b]], (1.0 - alpha) * N[a] * dN.row(b).transpose());
+      }
+    }
+    for (int b = 0; b < nen; ++b) add(node_to_active_[nodes[b]], alpha * dN.row(b).transpose());
+    std::sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [i, g] : entries) {
+      stencil_nodes_.push_back(i);
+      double value = 0.0;
+      for (int a = 0; a < nen; ++a)
+        if (node_to_active_[nodes[a]] == i) value = N[a];
+      stencil_N_.push_back(value);
+      for (int d = 0; d < dim; ++d) stencil_gradients_.push_back(g(d));
+    }
+    stencil_start_[p + 1] = static_cast<Index>(stencil_nodes_.size());
+  }
+}
+
+template <int Dim>
+bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Vector& du,
+                                          Vector& f_int, SparseMatrix* tangent) {
+  // Points one after the other (their stencils overlap across cells of one colour).
+  using Dynamic = Stencil<Eigen::Dynamic, Dim>;
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  Dynamic s;
+  KernelResult<Eigen::Dynamic, Dim> r;
+  Eigen::Matrix<double, Eigen::Dynamic, Dim> du_local;
+  const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
+  const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
+  for (Index p = 0; p < points.size(); ++p) {
+    const Index begin = stencil_start_[p], ns = stencil_start_[p + 1] - begin;
+    s.N = Eigen::Map<const Eigen::VectorXd>(stencil_N_.data() + begin, ns);
+    s.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
+        stencil_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
+    du_local.resize(ns, Dim);
+    for (Index a = 0; a < ns; ++a)
+      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil_nodes_[begin + a] * Dim + i);
+    const PointStartState start{materials_[points.material[p]], points.position[p],
+                                points.volume[p], points.deformation_gradient[p],
+                                points.elastic_left_cauchy_green[p], points.internal[p]};
+    if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
+    if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+      add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
+    trial_.stress[p] = r.state.cauchy_stress;
+    trial_.F[p] = r.state.deformation_gradient;
+    trial_.be[p] = r.state.elastic_left_cauchy_green;
+    trial_.internal[p] = r.state.internal;
+    trial_.volume[p] = r.volume;
+    for (Index a = 0; a < ns; ++a)
+      for (int i = 0; i < Dim; ++i) f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
+    if (!tangent) continue;
+    double* values = tangent->valuePtr();
+    for (Index a = 0; a < ns; ++a)
+      for (int i = 0; i < Dim; ++i) {
+        const Index col = free_index_[stencil_nodes_[begin + a] * Dim + i];
+        if (col < 0) continue;
+        const int* at = inner + outer[col];
+        const int* end = inner + outer[col + 1];
+        for (Index b = 0; b < ns; ++b)  // stencil nodes are sorted: rows ascend
+          for (int k = 0; k < Dim; ++k) {
+            const Index row = free_index_[stencil_nodes_[begin + b] * Dim + k];
+            if (row < 0) continue;
+            at = std::lower_bound(at, end, row);
+            values[at - inner] += r.stiffness(b * Dim + k, a * Dim + i);
+          }
+      }
+  }
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------

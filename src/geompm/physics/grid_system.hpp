@@ -25,6 +25,7 @@ struct GridSettings {
   Kinematics kinematics = Kinematics::PlaneStrain;
   double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
   int buffer_layers = 1;            // layers of empty cells activated around occupied cells
+  bool dual_domain = false;         // DDMP gradients (docs/theory.md §8) instead of standard MPM
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -106,11 +107,15 @@ class GridSystem {
                      const Vector& acceleration, double dt, bool dynamic) const;
   template <class E>
   void empty_cell_stiffness_typed();
+  template <int NS, int Dim, class Force, class Stiffness>
+  void add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
+                         const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
+                         Stiffness& K);
   template <class E>
-  void add_target_spring(Index p, const typename E::Values& N,
-                         const Eigen::Matrix<double, E::nodes, E::dim>& du, bool with_tangent,
-                         Eigen::Matrix<double, E::nodes * E::dim, 1>& f,
-                         Eigen::Matrix<double, E::nodes * E::dim, E::nodes * E::dim>& K);
+  void build_dual_domain_stencils(const MaterialPoints& points);
+  template <int Dim>
+  bool dual_domain_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                                SparseMatrix* tangent);
   void colour_active_cells();
 
   const Mesh& mesh_;
@@ -129,6 +134,11 @@ class GridSystem {
   std::vector<double> shape_;      // nen per point
   std::vector<double> gradients_;  // nen * dim per point (dN/dX at the start of the step)
   Vector mass_, velocity_, acceleration_;
+
+  // DDMP: each point's stencil (active nodes, sorted), shape values (zero outside its cell) and
+  // smoothed reference gradients (dim per entry); point p spans [stencil_start_[p], ...[p+1]).
+  std::vector<Index> stencil_start_, stencil_nodes_;
+  std::vector<double> stencil_N_, stencil_gradients_;
 
   std::vector<double> target_stiffness_;  // per point; empty when no point has a target
   std::vector<Vec3> target_;

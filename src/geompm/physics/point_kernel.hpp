@@ -31,14 +31,17 @@ struct GradientComponents<3> {
   static constexpr int col[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
 };
 
-/// What a point knows of its cell during a step: shape values and reference gradients at the
-/// point's local coordinates on the grid as it was at the start of the step (fixed within the
-/// step, so computed once per step).
-template <class E>
-struct PointStencil {
-  typename E::Values N;
-  Eigen::Matrix<double, E::nodes, E::dim> dN_dX;
+/// What a point knows of the grid during a step: shape values and reference gradients at the
+/// point's nodes, on the grid as it was at the start of the step (fixed within the step, so
+/// computed once per step). NS nodes: the cell's (standard MPM, compile-time size) or a wider,
+/// run-time sized stencil (DDMP, where N is zero at nodes outside the point's cell).
+template <int NS, int Dim>
+struct Stencil {
+  Eigen::Matrix<double, NS, 1> N;
+  Eigen::Matrix<double, NS, Dim> dN_dX;
 };
+template <class E>
+using PointStencil = Stencil<E::nodes, E::dim>;
 
 /// The start-of-step state a point brings into the kernel.
 struct PointStartState {
@@ -50,25 +53,29 @@ struct PointStartState {
   InternalVariables internal;
 };
 
-template <class E>
-struct PointKernelResult {
-  static constexpr int n = E::nodes * E::dim;
+template <int NS, int Dim>
+struct KernelResult {
+  static constexpr int n = NS == Eigen::Dynamic ? Eigen::Dynamic : NS * Dim;
   Eigen::Matrix<double, n, 1> internal_force;
   Eigen::Matrix<double, n, n> stiffness;
   FiniteStrainState state;
   double volume;  // current
 };
-
-/// du: the cell's nodal displacement increments, row a = node a. Returns false if the point's
-/// deformation is inadmissible (det dF <= 0): Newton then cuts the step back.
 template <class E>
-bool integrate_point(const PointStencil<E>& s, const PointStartState& p,
-                     const Eigen::Matrix<double, E::nodes, E::dim>& du, bool axisymmetric,
-                     bool want_tangent, PointKernelResult<E>& out) {
-  constexpr int dim = E::dim;
-  constexpr int nen = E::nodes;
+using PointKernelResult = KernelResult<E::nodes, E::dim>;
+
+/// du: the stencil's nodal displacement increments, row a = node a. Returns false if the
+/// point's deformation is inadmissible (det dF <= 0): Newton then cuts the step back.
+template <int NS, int Dim>
+bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
+                     const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric,
+                     bool want_tangent, KernelResult<NS, Dim>& out) {
+  constexpr int dim = Dim;
   using GC = GradientComponents<dim>;
   constexpr int nc = GC::count;
+  constexpr int n_dofs = KernelResult<NS, Dim>::n;
+  const int nen = static_cast<int>(s.N.size());
+  const int n = nen * dim;
 
   // Incremental deformation gradient dF = I + d(du)/dX, with the hoop stretch r/R in
   // axisymmetry (the out-of-plane stretch is 1 in plane strain).
@@ -87,10 +94,11 @@ bool integrate_point(const PointStencil<E>& s, const PointStartState& p,
   const double dJ = dF.determinant();
   out.volume = p.volume * dJ;
   const Eigen::Matrix<double, dim, dim> dF_inplane = dF.template topLeftCorner<dim, dim>();
-  const Eigen::Matrix<double, nen, dim> dN_dx = s.dN_dX * dF_inplane.inverse();
+  const Eigen::Matrix<double, NS, dim> dN_dx = s.dN_dX * dF_inplane.inverse();
 
   // B: row c = component (row[c], col[c]) of G^{a,i}; column a*dim + i.
-  Eigen::Matrix<double, nc, nen * dim> B = Eigen::Matrix<double, nc, nen * dim>::Zero();
+  Eigen::Matrix<double, nc, n_dofs> B;
+  B.setZero(nc, n);
   for (int a = 0; a < nen; ++a)
     for (int c = 0; c < nc; ++c) {
       const int i = GC::row[c], j = GC::col[c];

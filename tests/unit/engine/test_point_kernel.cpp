@@ -58,7 +58,7 @@ void check_tangent(const Material& material, bool prestressed, bool axisymmetric
     const auto c = make_case<E>(material, prestressed, rng);
     const auto s = make_stencil<E>(c.X, c.xi);
     PointKernelResult<E> r;
-    ASSERT_TRUE(integrate_point<E>(s, c.start, c.du, axisymmetric, true, r));
+    ASSERT_TRUE(integrate_point(s, c.start, c.du, axisymmetric, true, r));
     constexpr int n = E::nodes * E::dim;
     Eigen::Matrix<double, n, n> fd;
     const double h = 1e-6;
@@ -67,8 +67,8 @@ void check_tangent(const Material& material, bool prestressed, bool axisymmetric
       plus(j / E::dim, j % E::dim) += h;
       minus(j / E::dim, j % E::dim) -= h;
       PointKernelResult<E> rp, rm;
-      ASSERT_TRUE(integrate_point<E>(s, c.start, plus, axisymmetric, false, rp));
-      ASSERT_TRUE(integrate_point<E>(s, c.start, minus, axisymmetric, false, rm));
+      ASSERT_TRUE(integrate_point(s, c.start, plus, axisymmetric, false, rp));
+      ASSERT_TRUE(integrate_point(s, c.start, minus, axisymmetric, false, rm));
       fd.col(j) = (rp.internal_force - rm.internal_force) / (2 * h);
     }
     const double scale = fd.norm();
@@ -116,8 +116,8 @@ TEST(PointKernel, RigidRotationRotatesTheStress) {
   for (int a = 0; a < 4; ++a) du.row(a) = (R * X.row(a).transpose() - X.row(a).transpose()).transpose();
   const auto s = make_stencil<E>(X, E::Local(0.1, -0.2));
   PointKernelResult<E> rotated, unrotated;
-  ASSERT_TRUE(integrate_point<E>(s, start, du, false, false, rotated));
-  ASSERT_TRUE(integrate_point<E>(s, start, Eigen::Matrix<double, 4, 2>::Zero(), false, false,
+  ASSERT_TRUE(integrate_point(s, start, du, false, false, rotated));
+  ASSERT_TRUE(integrate_point(s, start, Eigen::Matrix<double, 4, 2>(Eigen::Matrix<double, 4, 2>::Zero()), false, false,
                                  unrotated));
   Mat3 R3 = Mat3::Identity();
   R3.topLeftCorner<2, 2>() = R;

@@ -1,6 +1,7 @@
 // Gmsh: generation of unstructured meshes, import, and the errors a user sees for bad files.
 #include <gtest/gtest.h>
 
+#include <clocale>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -264,6 +265,18 @@ TEST(GmshImportTest, ImportIsRepeatableAfterAnError) {
     EXPECT_THROW(read_gmsh_mesh(bad, 2), InputError);
     EXPECT_EQ(read_gmsh_mesh(good, 2).num_cells(), 2);
   }
+}
+
+TEST(GmshImportTest, NumericLocaleIsLeftAsItWas) {
+  // Gmsh switches LC_NUMERIC to "C"; a session must put the caller's setting back.
+  const std::string before = std::setlocale(LC_NUMERIC, nullptr);
+  if (!std::setlocale(LC_NUMERIC, "C.UTF-8")) GTEST_SKIP() << "no C.UTF-8 locale";
+  const std::string chosen = std::setlocale(LC_NUMERIC, nullptr);
+  TemporaryDirectory directory;
+  const std::string good = write_file(directory, "good.msh", square_file("0", two_triangles));
+  EXPECT_EQ(read_gmsh_mesh(good, 2).num_cells(), 2);
+  EXPECT_EQ(std::string(std::setlocale(LC_NUMERIC, nullptr)), chosen);
+  std::setlocale(LC_NUMERIC, before.c_str());
 }
 
 }  // namespace

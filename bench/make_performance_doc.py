@@ -1,0 +1,403 @@
+#!/usr/bin/python3
+"""Turns the JSON output of bench_step into docs/performance.md.
+
+Everything in the doc is computed from the JSON and the machine it ran on, so the doc can be
+regenerated at any time and never states a number that was not measured. Findings from profiling
+(which a table cannot show) live in bench/performance_notes.md and are copied in verbatim.
+
+Usage: make_performance_doc.py RESULTS.json OUTPUT.md [--build-dir DIR] [--load-after "a b c"]
+                                [--notes bench/performance_notes.md] [--wall-seconds S]
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import re
+import subprocess
+
+# The issue's targets (docs/performance.md restates them).
+TARGET_RATE = 1.0e6  # points per second per core, non-solve work of one Newton iteration
+TARGET_BYTES = 1024.0  # bytes per 2D material point
+TARGET_EXPONENT = 1.3  # time per step ~ n^exponent
+
+PHASES = [
+    # (key, label, what it times)
+    ("map", "map", "phase 1: `GridSystem::initialise` + `external_force`"),
+    ("constraints", "constraints", "fixities to constrained dofs + `set_constraints` (pattern, scatter maps)"),
+    ("internal_force@1", "internal force, 1 thread", "stress update + f_int + tangent assembly"),
+    ("internal_force@all", "internal force, all threads", "the same on every core"),
+    ("analyze", "analyze", "UMFPACK symbolic analysis (once per step)"),
+    ("factorize_solve", "factorize + solve", "UMFPACK numeric factorisation + one solve (per Newton iteration)"),
+    ("convect", "convect", "phase 3: `GridSystem::convect` + relocation (PointLocator)"),
+    ("step", "**whole step**", "`StepSolver::advance`"),
+]
+
+
+def run(command):
+    try:
+        return subprocess.run(command, capture_output=True, text=True, check=False).stdout
+    except OSError:
+        return ""
+
+
+def machine_facts(build_dir, context):
+    facts = {}
+    lscpu = run(["lscpu"])
+    model = re.search(r"Model name:\s*(.+)", lscpu)
+    facts["cpu"] = model.group(1).strip() if model else "unknown"
+    facts["cores"] = str(os.cpu_count())
+    try:
+        with open("/proc/meminfo") as meminfo:
+            kb = int(re.search(r"MemTotal:\s*(\d+)", meminfo.read()).group(1))
+        facts["memory"] = f"{kb / 1024 ** 2:.1f} GiB"
+    except (OSError, AttributeError):
+        facts["memory"] = "unknown"
+    facts["mhz"] = str(context.get("mhz_per_cpu", "?"))
+    caches = context.get("caches", [])
+    facts["caches"] = ", ".join(
+        f"L{c['level']} {c['type'].lower()} {c['size'] // 1024} KiB" for c in caches)
+    compiler, build_type = "unknown", "unknown"
+    cache = os.path.join(build_dir, "CMakeCache.txt")
+    if os.path.exists(cache):
+        with open(cache) as f:
+            text = f.read()
+        cxx = re.search(r"^CMAKE_CXX_COMPILER:\w+=(.+)$", text, re.M)
+        if cxx:
+            compiler = run([cxx.group(1).strip(), "--version"]).splitlines()[0:1]
+            compiler = compiler[0] if compiler else cxx.group(1)
+        bt = re.search(r"^CMAKE_BUILD_TYPE:\w+=(.*)$", text, re.M)
+        build_type = bt.group(1) if bt else build_type
+    facts["compiler"] = compiler
+    facts["build_type"] = build_type
+    # Which BLAS UMFPACK's dense frontal kernels run on matters more than anything in geompm
+    # for the solve: reference BLAS is several times slower than an optimised one.
+    binary = os.path.join(build_dir, "bench", "bench_step")
+    blas = [line.split("=>")[1].split("(")[0].strip()
+            for line in run(["ldd", binary]).splitlines() if "blas" in line]
+    resolved = [os.path.realpath(b) for b in blas]
+    facts["blas"] = ", ".join(resolved) if resolved else "unknown"
+    facts["kernel"] = run(["uname", "-sr"]).strip()
+    facts["commit"] = run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "rev-parse",
+                           "--short", "HEAD"]).strip() or "unknown"
+    dirty = run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "status",
+                 "--porcelain", "--untracked-files=no", "--", "../src"]).strip()
+    facts["dirty"] = bool(dirty)
+    return facts
+
+
+def parse_name(run_name):
+    parts = run_name.split("/")
+    cells = threads = None
+    for p in parts[1:]:
+        if p.startswith("cells:"):
+            cells = int(p.split(":")[1])
+        elif p.startswith("threads:"):
+            threads = int(p.split(":")[1])
+    return parts[0], cells, threads
+
+
+def to_ms(value, unit):
+    return value * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[unit]
+
+
+def load_results(path):
+    with open(path) as f:
+        data = json.load(f)
+    cores = int(data["context"].get("omp_max_threads", data["context"].get("num_cpus", 1)))
+    medians, cvs, memory = {}, {}, {}
+    for b in data["benchmarks"]:
+        phase, cells, threads = parse_name(b["run_name"])
+        key = phase
+        if phase == "internal_force":
+            key = "internal_force@1" if threads == 1 else "internal_force@all"
+        if phase == "memory" and b["run_type"] == "iteration":
+            memory[cells] = b
+        elif b.get("aggregate_name") == "median":
+            medians[(key, cells)] = dict(b, time_ms=to_ms(b["real_time"], b["time_unit"]))
+        elif b.get("aggregate_name") == "cv":
+            cvs[(key, cells)] = b["real_time"]
+        elif b["run_type"] == "iteration" and (key, cells) not in medians:
+            # A single repetition reports no aggregates: its one run is its median.
+            medians[(key, cells)] = dict(b, time_ms=to_ms(b["real_time"], b["time_unit"]))
+    sizes = sorted({cells for (_, cells) in medians} | set(memory))
+    repetitions = max((b.get("repetitions", 1) for b in data["benchmarks"]), default=1)
+    return data["context"], cores, sizes, medians, cvs, memory, repetitions
+
+
+def slope(xs, ys):
+    """Least-squares slope of log y against log x."""
+    lx, ly = [math.log(x) for x in xs], [math.log(y) for y in ys]
+    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+    den = sum((a - mx) ** 2 for a in lx)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / den if den > 0 else float("nan")
+
+
+def fmt_ms(ms):
+    if ms is None:
+        return "–"
+    if ms >= 10000:
+        return f"{ms / 1000:.1f} s"
+    if ms >= 1000:
+        return f"{ms / 1000:.2f} s"
+    if ms >= 10:
+        return f"{ms:.0f} ms"
+    return f"{ms:.2f} ms"
+
+
+def fmt_count(x):
+    if x >= 1e6:
+        return f"{x / 1e6:.2f} M"
+    if x >= 1e3:
+        return f"{x / 1e3:.0f} k"
+    return f"{x:.0f}"
+
+
+def verdict(ok):
+    return "**met**" if ok else "**not met**"
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("results")
+    parser.add_argument("output")
+    parser.add_argument("--build-dir", default="build")
+    parser.add_argument("--load-after", default="")
+    parser.add_argument("--wall-seconds", type=float, default=None)
+    parser.add_argument("--notes", default=None)
+    parser.add_argument("--omp-wait-policy", default=os.environ.get("OMP_WAIT_POLICY", "(default)"))
+    args = parser.parse_args()
+
+    context, cores, sizes, med, cvs, memory, repetitions = load_results(args.results)
+    facts = machine_facts(args.build_dir, context)
+
+    def t(key, cells):
+        entry = med.get((key, cells))
+        return entry["time_ms"] if entry else None
+
+    def counter(key, cells, name):
+        entry = med.get((key, cells))
+        return entry.get(name) if entry else None
+
+    points = {c: (counter("step", c, "points") or memory.get(c, {}).get("points")) for c in sizes}
+    out = []
+    w = out.append
+    date = context.get("date", datetime.datetime.now().isoformat())[:16].replace("T", " ")
+    w("# Performance\n")
+    w("<!-- Generated by bench/run_benchmarks.sh (bench/make_performance_doc.py) from "
+      "bench/results/bench_step.json; edit the generator or bench/performance_notes.md, not "
+      "this file. -->\n")
+    w("What one implicit step of geompm costs, phase by phase, at sizes from 10^4 to 10^6 "
+      "material points in 2D, measured by `bench/bench_step` and written here by "
+      "`bench/run_benchmarks.sh`. Timings are **medians of "
+      f"{repetitions} repetitions**, wall clock. Performance is measured here, never asserted "
+      "in tests.\n")
+
+    w("## Machine and run\n")
+    w("| | |\n|---|---|")
+    w(f"| date | {date} UTC |")
+    w(f"| CPU | {facts['cpu']}, {facts['cores']} cores, {facts['mhz']} MHz |")
+    w(f"| caches | {facts['caches']} |")
+    w(f"| memory | {facts['memory']} |")
+    w(f"| kernel | {facts['kernel']} |")
+    w(f"| compiler | {facts['compiler']}, CMAKE_BUILD_TYPE={facts['build_type']} |")
+    w(f"| BLAS under UMFPACK | {facts['blas']} |")
+    w(f"| geompm commit | {facts['commit']}{' (src/ modified)' if facts['dirty'] else ''} |")
+    w(f"| OpenMP threads | {cores} (`OMP_WAIT_POLICY={args.omp_wait_policy}`) |")
+    load_before = ", ".join(f"{x:.2f}" for x in context.get("load_avg", []))
+    w(f"| load average (1, 5, 15 min) | at start {load_before or '?'}; at end "
+      f"{args.load_after or '?'} |")
+    if args.wall_seconds:
+        w(f"| benchmark run time | {args.wall_seconds / 60:.1f} min |")
+    w("")
+
+    w("## What is timed\n")
+    w("The model (bench/step_case.cpp) is an elastic block (E = 1e5 kPa, nu = 0.3, density 2 t/m3) "
+      "under its own weight in plane strain: a 10 m square of `cells` x `cells` Quad4 cells, "
+      "the body filling all but the top row (the empty buffer row above a free surface), 4 "
+      "points per cell, rollers on the sides and a fixed base, one quasi-static step of dt = 1 "
+      "solved by Newton with UMFPACK. Each phase is timed on its own with everything before it "
+      "in place; `step` times `StepSolver::advance` whole, from the same state every time.\n")
+    w("| benchmark | what it times |\n|---|---|")
+    for key, label, what in PHASES:
+        w(f"| {label} | {what} |")
+    w("")
+
+    # --- the table ---------------------------------------------------------------------------
+    w("## Time per phase (medians)\n")
+    header = "| | " + " | ".join(f"{c}x{c} cells" for c in sizes) + " |"
+    w(header)
+    w("|---" * (len(sizes) + 1) + "|")
+    w("| material points | " + " | ".join(fmt_count(points[c] or 0) for c in sizes) + " |")
+    w("| free dofs | " + " | ".join(fmt_count(counter("analyze", c, "free_dofs") or 0)
+                                  for c in sizes) + " |")
+    w("| tangent non-zeros | " + " | ".join(fmt_count(counter("analyze", c, "nnz") or 0)
+                                          for c in sizes) + " |")
+    for key, label, _ in PHASES:
+        w(f"| {label} | " + " | ".join(fmt_ms(t(key, c)) for c in sizes) + " |")
+    w("| Newton iterations (solves) per step | " + " | ".join(
+        f"{counter('step', c, 'newton_iterations') or 0:.0f}" for c in sizes) + " |")
+    w("")
+
+    # --- composition of a step -----------------------------------------------------------------
+    w("## Where a step's time goes\n")
+    w("A step with k Newton solves does map + constraints + (k+1) internal-force evaluations "
+      "(the last one checks convergence) + analyze + k (factorize + solve) + convect. The "
+      "phases' medians put together that way, against the measured step:\n")
+    w("| | " + " | ".join(f"{c}x{c}" for c in sizes) + " |")
+    w("|---" * (len(sizes) + 1) + "|")
+    shares = {}
+    for c in sizes:
+        k = counter("step", c, "newton_iterations") or 0
+        parts = {
+            "map + constraints + convect": sum(t(x, c) or 0 for x in ("map", "constraints", "convect")),
+            "internal force (all threads)": (k + 1) * (t("internal_force@all", c) or 0),
+            "analyze + factorize + solve": (t("analyze", c) or 0) + k * (t("factorize_solve", c) or 0),
+        }
+        total = sum(parts.values())
+        shares[c] = (parts, total, t("step", c))
+    for name in ("map + constraints + convect", "internal force (all threads)",
+                 "analyze + factorize + solve"):
+        cells_text = []
+        for c in sizes:
+            parts, total, _ = shares[c]
+            cells_text.append(f"{fmt_ms(parts[name])} ({100 * parts[name] / total:.0f} %)"
+                              if total else "–")
+        w(f"| {name} | " + " | ".join(cells_text) + " |")
+    w("| sum of phases | " + " | ".join(fmt_ms(shares[c][1]) for c in sizes) + " |")
+    w("| measured step | " + " | ".join(fmt_ms(shares[c][2]) for c in sizes) + " |")
+    w("")
+    largest = sizes[-1]
+    parts, total, _ = shares[largest]
+    dominant = max(parts, key=parts.get)
+    w(f"At {largest}x{largest} cells the step is dominated by **{dominant}** "
+      f"({100 * parts[dominant] / total:.0f} % of the phases' sum).\n")
+
+    # --- non-solve rate ----------------------------------------------------------------------
+    w("## Non-solve work of one Newton iteration\n")
+    w("Stress update + internal force + tangent assembly (`GridSystem::internal_force` with the "
+      "tangent), in material points per second.\n")
+    w("| | " + " | ".join(f"{c}x{c}" for c in sizes) + " |")
+    w("|---" * (len(sizes) + 1) + "|")
+    rate1 = {c: counter("internal_force@1", c, "points_per_s_per_core") for c in sizes}
+    rate_all = {c: counter("internal_force@all", c, "points_per_s") for c in sizes}
+    rate_all_core = {c: counter("internal_force@all", c, "points_per_s_per_core") for c in sizes}
+    w("| 1 thread (per core) | " + " | ".join(fmt_count(rate1[c] or 0) + "/s" for c in sizes) + " |")
+    w(f"| {cores} threads, total | " + " | ".join(fmt_count(rate_all[c] or 0) + "/s"
+                                               for c in sizes) + " |")
+    w(f"| {cores} threads, per core | " + " | ".join(fmt_count(rate_all_core[c] or 0) + "/s"
+                                                  for c in sizes) + " |")
+    w(f"| parallel speed-up on {cores} cores | " + " | ".join(
+        f"{(rate_all[c] or 0) / rate1[c]:.2f}" if rate1[c] else "–" for c in sizes) + " |")
+    w("")
+
+    # --- memory --------------------------------------------------------------------------------
+    w("## Memory per material point\n")
+    w("Heap held after each stage (glibc `mallinfo2`, all arenas), and the peak resident set "
+      "of a whole step above the process's resident set before the model was built (held "
+      "plus transient memory: sorting copies, the factorisation's work space), all divided by "
+      "the number of points. The point store is `MaterialPoints::bytes_per_point()` (capacity "
+      "included).\n")
+    w("| bytes per point | " + " | ".join(f"{c}x{c}" for c in sizes) + " |")
+    w("|---" * (len(sizes) + 1) + "|")
+    rows = [("point store (`MaterialPoints`)", "point_store_B_per_point"),
+            ("model: mesh, topology, locator, points", "model_B_per_point"),
+            ("grid: `GridSystem` state, pattern, tangent, f_ext, f_int", "grid_B_per_point"),
+            ("solver: UMFPACK factorisation", "solver_B_per_point"),
+            ("**peak of a whole step**", "step_peak_B_per_point")]
+    for label, name in rows:
+        w(f"| {label} | " + " | ".join(
+            f"{memory[c][name]:.0f}" if c in memory and memory[c].get(name, -1) >= 0 else "–"
+            for c in sizes) + " |")
+    held = {c: memory[c]["model_B_per_point"] + memory[c]["grid_B_per_point"]
+            for c in sizes if c in memory}
+    w("| model + grid (without the factorisation) | " + " | ".join(
+        f"{held[c]:.0f}" if c in held else "–" for c in sizes) + " |")
+    w("")
+
+    # --- growth --------------------------------------------------------------------------------
+    w("## Growth with size\n")
+    w("Exponent p of time ~ n^p (n = material points): least-squares slope of log time against "
+      "log n over all sizes, and between neighbouring sizes.\n")
+    w("| | all sizes | " + " | ".join(f"{a} → {b}" for a, b in zip(sizes, sizes[1:])) + " |")
+    w("|---" * (len(sizes) + 1) + "|")
+    exponents = {}
+    non_solve = {}
+    for c in sizes:
+        k = counter("step", c, "newton_iterations") or 0
+        if t("step", c) is not None:
+            non_solve[c] = t("step", c) - (t("analyze", c) or 0) - k * (t("factorize_solve", c) or 0)
+    series = [(label, {c: t(key, c) for c in sizes}) for key, label, _ in PHASES]
+    series.append(("step without the solver (step − analyze − k factorize+solve)", non_solve))
+    for label, values in series:
+        cs = [c for c in sizes if values.get(c) and values[c] > 0 and points[c]]
+        if len(cs) < 2:
+            continue
+        p_all = slope([points[c] for c in cs], [values[c] for c in cs])
+        exponents[label] = p_all
+        pairs = []
+        for a, b in zip(sizes, sizes[1:]):
+            if a in cs and b in cs:
+                pairs.append(f"{slope([points[a], points[b]], [values[a], values[b]]):.2f}")
+            else:
+                pairs.append("–")
+        w(f"| {label} | {p_all:.2f} | " + " | ".join(pairs) + " |")
+    w("")
+
+    # --- targets -------------------------------------------------------------------------------
+    w("## Targets (from the issue)\n")
+    w("| target | measured | |\n|---|---|---|")
+    best1 = max((r for r in rate1.values() if r), default=0)
+    at_large = rate1.get(largest) or 0
+    w(f"| non-solve work of a Newton iteration ≥ 1 M points/s per core | "
+      f"{fmt_count(at_large)}/s on 1 thread at {largest}x{largest} (best {fmt_count(best1)}/s); "
+      f"{fmt_count(rate_all_core.get(largest) or 0)}/s per core on {cores} | "
+      f"{verdict(at_large >= TARGET_RATE)} |")
+    if largest in memory:
+        m = memory[largest]
+        store_ok = m["point_store_B_per_point"] <= TARGET_BYTES
+        held_ok = held[largest] <= TARGET_BYTES
+        peak_ok = 0 <= m["step_peak_B_per_point"] <= TARGET_BYTES
+        w(f"| ≤ 1 KB of memory per 2D material point | at {largest}x{largest}: point store "
+          f"{m['point_store_B_per_point']:.0f} B, model + grid {held[largest]:.0f} B, peak of a "
+          f"step with the factorisation {m['step_peak_B_per_point']:.0f} B | point store "
+          f"{verdict(store_ok)}; model + grid {verdict(held_ok)}; whole step {verdict(peak_ok)} |")
+    p_step = exponents.get("**whole step**")
+    p_ns = exponents.get("step without the solver (step − analyze − k factorize+solve)")
+    if p_step is not None:
+        w(f"| time per step ≤ ~n^1.3 (while the direct solver is used) | whole step n^{p_step:.2f}"
+          + (f"; without the solver n^{p_ns:.2f}" if p_ns is not None else "")
+          + f" | {verdict(p_step <= TARGET_EXPONENT + 0.05)} |")
+    w("")
+
+    # --- noise ---------------------------------------------------------------------------------
+    w("## Noise\n")
+    noisy = sorted(((v, k) for k, v in cvs.items() if v > 0.10), reverse=True)
+    if cvs:
+        worst = max(cvs.values())
+        w(f"Coefficient of variation of the repetitions: median "
+          f"{100 * sorted(cvs.values())[len(cvs) // 2]:.1f} %, worst {100 * worst:.1f} %.")
+    if noisy:
+        w(" Above 10 %: " + ", ".join(f"{k[0]} at {k[1]}x{k[1]} ({100 * v:.0f} %)"
+                                      for v, k in noisy[:8]) + ".")
+    loads = context.get("load_avg", [])
+    if loads and loads[0] > 0.5 * cores:
+        w(f" The machine was shared while this ran (1-minute load {loads[0]:.1f} on {cores} "
+          "cores at the start): other processes took CPU time, so absolute times are "
+          "pessimistic and the medians are the figures to read.")
+    w("")
+
+    if args.notes and os.path.exists(args.notes):
+        with open(args.notes) as f:
+            w(f.read().rstrip() + "\n")
+
+    w("## Reproducing\n")
+    w("```sh\nBUILD_DIR=build bench/run_benchmarks.sh            # all sizes, about 10 min on 2 cores\n"
+      "GEOMPM_BENCH_CELLS=50,160 bench/run_benchmarks.sh  # quicker, fewer sizes\n```\n")
+    with open(args.output, "w") as f:
+        f.write("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,224 @@
+#include "step_case.hpp"
+
+#include "process_memory.hpp"
+
+namespace geompm::bench {
+
+namespace {
+
+constexpr double side = 10.0;  // m: the block is side x side whatever the cell count
+
+}  // namespace
+
+spec::Model block_under_gravity(int cells) {
+  spec::Model model;
+  model.title = "benchmark: elastic block under self-weight";
+  model.kinematics = Kinematics::PlaneStrain;
+
+  StructuredMeshSpec mesh;
+  mesh.cell_type = CellType::Quad4;
+  mesh.axes[0] = {AxisSegment{side, cells, 1.0}};
+  mesh.axes[1] = {AxisSegment{side, cells, 1.0}};
+  model.mesh.generate = mesh;
+
+  // A soil-like stiffness in kN, m, t: self-weight strains of about 1e-3, so Newton converges
+  // in the few iterations a quasi-static soil step takes.
+  model.materials.push_back({"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}});
+
+  spec::Body body;
+  body.name = "block";
+  body.material = "soil";
+  body.region.kind = spec::Region::Kind::Box;
+  body.region.min = Vec3(0, 0, 0);
+  body.region.max = Vec3(side, side - side / cells, 0);  // the top row stays empty
+  body.points_per_cell = 4;
+  model.bodies.push_back(body);
+
+  spec::Phase phase;
+  phase.name = "gravity";
+  phase.duration = 1.0;
+  phase.time_step = {1.0, 1.0, 1.0};
+  phase.gravity = spec::Gravity{Vec3(0, -9.81, 0), false};
+  spec::Fixity rollers_left, rollers_right, base;
+  rollers_left.boundary = "left";
+  rollers_left.normal_only = true;
+  rollers_right.boundary = "right";
+  rollers_right.normal_only = true;
+  base.boundary = "bottom";
+  base.components = {true, true, true};
+  phase.fixities = {rollers_left, rollers_right, base};
+  model.phases.push_back(phase);
+  return model;
+}
+
+StepCase::StepCase(int cells) : cells_(cells) {
+  release_free_heap();
+  baseline_resident_ = resident_bytes();
+  const std::size_t before = heap_in_use();
+  model_ = build_model(block_under_gravity(cells));
+  phase_ = std::make_unique<PhaseContext>(*model_, model_->spec.phases.front());
+  memory_.model = double(heap_in_use() - before);
+}
+
+void StepCase::map() {
+  if (!grid_) {
+    heap_before_grid_ = heap_in_use();
+    grid_ = std::make_unique<GridSystem>(model_->mesh, model_->topology,
+                                         model_->material_pointers(), GridSettings{
+                                             model_->kinematics(),
+                                             model_->spec.numerics.empty_cell_stiffness *
+                                                 model_->largest_modulus(),
+                                             model_->spec.numerics.buffer_layers});
+  }
+  grid_->initialise(model_->points);
+  f_ext_ = grid_->external_force(model_->points, phase_->gravity(1.0), {});
+  mapped_ = true;
+}
+
+void StepCase::constrain() {
+  if (!mapped_) map();
+  const int dim = grid_->dim();
+  const auto& node_to_active = grid_->node_to_active();
+  constrained_dofs_.assign(grid_->num_dofs(), 0);
+  for (const auto& fixity : phase_->fixities)
+    for (Index node : fixity.nodes) {
+      const Index n = node_to_active[node];
+      if (n < 0) continue;
+      for (int i = 0; i < dim; ++i)
+        if (fixity.components[i]) constrained_dofs_[n * dim + i] = 1;
+    }
+  grid_->set_constraints(constrained_dofs_);
+  constrained_ = true;
+}
+
+void StepCase::evaluate() {
+  if (!constrained_) constrain();
+  if (du_.size() != grid_->num_dofs()) {
+    const int dim = grid_->dim();
+    du_ = Vector::Zero(grid_->num_dofs());
+    for (std::size_t n = 0; n < grid_->active_nodes().size(); ++n)
+      du_(Index(n) * dim + 1) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
+  }
+  grid_->internal_force(model_->points, du_, f_int_, &tangent_);
+  if (!evaluated_) memory_.grid = double(heap_in_use() - heap_before_grid_);
+  evaluated_ = true;
+}
+
+void StepCase::analyse() {
+  if (!evaluated_) evaluate();
+  if (!solver_) solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
+  solver_->analyze(tangent_);
+  analysed_ = true;
+}
+
+void StepCase::factorize_and_solve() {
+  if (!analysed_) analyse();
+  const std::size_t before = heap_in_use();
+  // The Newton right-hand side: the out-of-balance force at the free unknowns.
+  if (residual_.size() != grid_->num_free()) {
+    const Vector r = f_ext_ - f_int_;
+    residual_ = Vector::Zero(grid_->num_free());
+    for (Index d = 0; d < grid_->num_dofs(); ++d)
+      if (grid_->free_index()[d] >= 0) residual_(grid_->free_index()[d]) = r(d);
+  }
+  solver_->factorize(tangent_);
+  const Vector dx = solver_->solve(residual_);
+  if (!factorised_) memory_.solver = double(heap_in_use() - before);
+  factorised_ = true;
+}
+
+void StepCase::convect_and_relocate() {
+  if (!evaluated_) evaluate();
+  MaterialPoints& points = model_->points;
+  const Index n = points.size();
+  const int dim = grid_->dim();
+  if (saved_position_.empty()) {
+    saved_position_ = points.position;
+    saved_cell_ = points.cell;
+    saved_local_ = points.local;
+  }
+  // As StepSolver::convect_and_relocate: find every destination before committing anything.
+  std::vector<Location> found(n);
+  std::vector<char> lost(n, 0);
+  const auto& node_to_active = grid_->node_to_active();
+#pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
+  for (Index p = 0; p < n; ++p) {
+    const auto nodes = model_->mesh.cell_nodes(points.cell[p]);
+    const auto N = grid_->shape_values(p);
+    Vec3 destination = points.position[p];
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int i = 0; i < dim; ++i) destination(i) += N[a] * du_(node_to_active[nodes[a]] * dim + i);
+    if (auto where = model_->locator->locate(destination, points.cell[p]))
+      found[p] = *where;
+    else
+      lost[p] = 1;
+  }
+  const Vector velocity = du_;  // quasi-static, dt = 1
+  const Vector acceleration = Vector::Zero(du_.size());
+  grid_->convect(points, du_, velocity, acceleration, 1.0, false);
+  for (Index p = 0; p < n; ++p)
+    if (!lost[p]) {
+      points.cell[p] = found[p].cell;
+      points.local[p] = found[p].xi;
+    }
+}
+
+void StepCase::undo_convect() {
+  if (saved_position_.empty()) return;
+  model_->points.position = saved_position_;
+  model_->points.cell = saved_cell_;
+  model_->points.local = saved_local_;
+}
+
+int StepCase::full_step() {
+  if (!step_) {
+    step_linear_solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
+    step_ = std::make_unique<StepSolver>(*model_, *step_linear_solver_);
+  }
+  const StepResult result = step_->advance(*phase_, 0.0, 1.0);
+  if (!result.converged) throw std::runtime_error("benchmark step did not converge: " +
+                                                  result.newton.failure);
+  return result.newton.iterations;
+}
+
+void StepCase::save_points() {
+  if (!initial_points_) initial_points_ = model_->points;
+}
+
+void StepCase::restore_points() {
+  if (initial_points_) model_->points = *initial_points_;
+}
+
+void StepCase::release_stages() {
+  undo_convect();
+  grid_.reset();
+  solver_.reset();
+  tangent_ = SparseMatrix();
+  f_ext_ = f_int_ = du_ = residual_ = Vector();
+  constrained_dofs_ = {};
+  saved_position_ = {};
+  saved_cell_ = {};
+  saved_local_ = {};
+  mapped_ = constrained_ = evaluated_ = analysed_ = factorised_ = false;
+  release_free_heap();
+}
+
+void StepCase::build_all_stages() {
+  if (!factorised_) factorize_and_solve();
+}
+
+double StepCase::saved_points_bytes() const {
+  return initial_points_ ? initial_points_->bytes_per_point() * double(initial_points_->size())
+                         : 0.0;
+}
+
+StepCase& step_case(int cells) {
+  static std::unique_ptr<StepCase> current;
+  if (!current || current->cells() != cells) {
+    current.reset();  // first free the previous size, then build the next
+    current = std::make_unique<StepCase>(cells);
+  }
+  return *current;
+}
+
+}  // namespace geompm::bench
