@@ -8,12 +8,15 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/model_reader.hpp"
 #include "geompm/io/plot.hpp"
+#include "geompm/mesh/cell_type.hpp"
+#include "geompm/mesh/gmsh_generate.hpp"
 
 namespace {
 
@@ -71,10 +74,58 @@ int main(int argc, char** argv) {
   plot->add_option("--title", plot_request.title, "plot title");
   plot->add_option("-o,--output", png, "PNG file to write")->default_val("plot.png");
 
+  // Unstructured meshes through Gmsh, written as .msh for `mesh: {file: ...}` in a model.
+  std::vector<double> origin = {0, 0, 0}, size, refine;
+  double h = 0, h_refined = 0;
+  std::string cell = "tri3", msh = "mesh.msh";
+  auto* mesh = app.add_subcommand("mesh", "write an unstructured Gmsh mesh of a rectangle or box");
+  mesh->add_option("--origin", origin, "lower corner (2 or 3 numbers)")->expected(2, 3);
+  mesh->add_option("--size", size, "extent (2 numbers: rectangle, 3: box)")->required()->expected(2, 3);
+  mesh->add_option("--h", h, "cell size")->required()->check(CLI::PositiveNumber);
+  mesh->add_option("--refine", refine, "refinement box: lower and upper corner (4 or 6 numbers)")
+      ->expected(4, 6);
+  mesh->add_option("--h-refined", h_refined, "cell size inside the refinement box");
+  mesh->add_option("--cell", cell, "tri3, tri6, quad4 (2D) or tet4 (3D)")->default_val("tri3");
+  mesh->add_option("-o,--output", msh, "the .msh file to write")->default_val("mesh.msh");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*run) return run_command(model_file, output, threads, quiet);
     if (*check) return check_command(model_file);
+    if (*mesh) {
+      const auto type = geompm::parse_cell_type(cell);
+      if (!type) throw geompm::InputError("--cell: expected tri3, tri6, quad4 or tet4, got '" + cell + "'");
+      const bool box = size.size() == 3;
+      auto vec = [](const std::vector<double>& v, std::size_t offset) {
+        geompm::Vec3 x = geompm::Vec3::Zero();
+        for (std::size_t i = 0; i + offset < v.size() && i < 3; ++i) x(i) = v[i + offset];
+        return x;
+      };
+      std::optional<geompm::RefineBox> region;
+      if (!refine.empty()) {
+        const std::size_t half = refine.size() / 2;
+        if (refine.size() % 2 || (half != size.size()))
+          throw geompm::InputError("--refine: expected " + std::to_string(2 * size.size()) +
+                                   " numbers (lower and upper corner)");
+        geompm::Vec3 lo = geompm::Vec3::Zero(), hi = geompm::Vec3::Zero();
+        for (std::size_t i = 0; i < half; ++i) {
+          lo(i) = refine[i];
+          hi(i) = refine[half + i];
+        }
+        region = std::make_pair(lo, hi);
+        if (!(h_refined > 0)) throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
+      }
+      try {
+        if (box)
+          geompm::write_gmsh_box(msh, vec(origin, 0), vec(size, 0), h, *type, region, h_refined);
+        else
+          geompm::write_gmsh_rectangle(msh, vec(origin, 0), vec(size, 0), h, *type, region, h_refined);
+      } catch (const std::invalid_argument& e) {
+        throw geompm::InputError(std::string("geompm mesh: ") + e.what());
+      }
+      std::cout << "wrote " << msh << "\n";
+      return 0;
+    }
     if (*plot) {
       geompm::plot_history(plot_request, png);
       std::cout << "wrote " << png << "\n";
