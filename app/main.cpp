@@ -57,8 +57,9 @@ int main(int argc, char** argv) {
   run->add_option("model", model_file, "model file (YAML or JSON)")->required();
   run->add_option("-o,--output", output, "output directory (default: <model name>_results)");
   run->add_option("-t,--threads", threads, "number of threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
-  run->add_flag("-q,--quiet", quiet, "no progress line or summary");
+      ->check(CLI::Range(1, 4096).description("a whole number >= 1"));
+  run->add_flag("-q,--quiet", quiet,
+                "no model description or progress line (the closing summary is still printed)");
 
   auto* check = app.add_subcommand("check", "validate a model and print a summary, without running");
   check->add_option("model", model_file, "model file")->required();
@@ -88,7 +89,21 @@ int main(int argc, char** argv) {
   mesh->add_option("--cell", cell, "tri3, tri6, quad4 (2D) or tet4 (3D)")->default_val("tri3");
   mesh->add_option("-o,--output", msh, "the .msh file to write")->default_val("mesh.msh");
 
-  CLI11_PARSE(app, argc, argv);
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const auto* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
+    if (!known) {
+      std::cerr << "error: unknown command '" << argv[1]
+                << "'; the commands are: run, check, plot, mesh (see --help)\n";
+      return 1;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; every bad command line exits 1 (CLI11 prints the reason).
+    return app.exit(e) == 0 ? 0 : 1;
+  }
   try {
     if (*run) return run_command(model_file, output, threads, quiet);
     if (*check) return check_command(model_file);

@@ -24,7 +24,7 @@ namespace geompm::bench {
 /// The benchmark model with `cells` x `cells` cells (4 (cells - 1) cells material points).
 spec::Model block_under_gravity(int cells);
 
-/// Heap held by each stage of a step, measured the first time the stage is built.
+/// Heap held by each stage of a step, measured the first time the stage is built (0: not yet).
 struct StageMemory {
   double model = 0;   // mesh, topology, locator, materials, material points
   double grid = 0;    // GridSystem after initialise + constraints + one evaluation, f_ext, f_int

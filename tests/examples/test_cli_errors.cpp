@@ -472,10 +472,6 @@ TEST_F(CliErrors, PointsPerCellNotAvailableForTheImportedCellType) {
 }
 
 TEST_F(CliErrors, PointsPerCellErrorGivesItsLineAndTheAllowedCounts) {
-  GTEST_SKIP() << "BUG: build_model (src/geompm/analysis/model.cpp) reports a points_per_cell "
-                  "that the imported cell type does not allow at the line of the body, not of "
-                  "points_per_cell, and the message from seed_cell (src/geompm/points/seeding.cpp) "
-                  "does not say which counts are allowed (1, 4, 9, 16 for quad4)";
   write("mesh.msh", msh_text(two_quads()));
   ModelParts parts;
   parts.body_extra = "    points_per_cell: 3\n";
@@ -516,9 +512,6 @@ TEST_F(CliErrors, HistoryOnABoundaryTheMeshLacks) {
 }
 
 TEST_F(CliErrors, HistoryBoundaryErrorListsTheBoundaries) {
-  GTEST_SKIP() << "BUG: build_model (src/geompm/analysis/model.cpp) says only \"the mesh has no "
-                  "boundary 'right'\" for a history on a missing boundary; unlike the same error "
-                  "for a fixity it does not list the mesh's boundaries (what was expected)";
   write("mesh.msh", msh_text(two_quads()));
   ModelParts parts;
   parts.output =
@@ -533,10 +526,6 @@ TEST_F(CliErrors, HistoryBoundaryErrorListsTheBoundaries) {
 // Errors in the mesh file name the mesh file; they should also say which model (and which key)
 // asked for that mesh, as every other model error does.
 TEST_F(CliErrors, MeshFileErrorsNameTheModelFile) {
-  GTEST_SKIP() << "BUG: errors found in an imported mesh's content (inverted or degenerate cell, "
-                  "not a mesh, wrong dimension) name only the .msh file: make_mesh "
-                  "(src/geompm/analysis/model.cpp) calls read_gmsh_mesh without adding the "
-                  "model file, line and key path of mesh.file, so stderr never names the model";
   Msh inverted = two_quads();
   inverted.cells[0] = {1, 4, 5, 2};
   write("inverted.msh", msh_text(inverted));
@@ -564,8 +553,6 @@ TEST_F(CliErrors, MissingModelFile) {
 }
 
 TEST_F(CliErrors, UnknownCommandLineOption) {
-  GTEST_SKIP() << "BUG: app/main.cpp returns CLI11's own exit codes through CLI11_PARSE (109 "
-                  "for an unknown option) instead of the documented 1 for a bad command line";
   write("mesh.msh", msh_text(two_quads()));
   write("model.yaml", model_text({}));
   const auto r = geompm({"run", "--frobnicate", "-o", "out", "model.yaml"});
@@ -576,10 +563,6 @@ TEST_F(CliErrors, UnknownCommandLineOption) {
 }
 
 TEST_F(CliErrors, OtherBadCommandLines) {
-  GTEST_SKIP() << "BUG: app/main.cpp exits with CLI11's codes (105, 106) instead of 1; "
-                  "'run -t 0' says \"Value 0 not in range 0.000000 to 1797693...\" (CLI11::"
-                  "PositiveNumber), and an unknown subcommand is reported as \"A subcommand is "
-                  "required\" without naming it";
   write("mesh.msh", msh_text(two_quads()));
   write("model.yaml", model_text({}));
   const auto zero_threads = geompm({"run", "-t", "0", "-o", "out", "model.yaml"});

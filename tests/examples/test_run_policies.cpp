@@ -342,11 +342,6 @@ TEST_F(RunPolicies, LostPointsRemoved) {
 }
 
 TEST_F(RunPolicies, AllPointsRemoved) {
-  GTEST_SKIP() << "BUG: with lost_points: remove, once every material point has left the mesh the "
-                  "next step crashes (SIGSEGV): GridSystem::initialise_typed "
-                  "(src/geompm/physics/grid_system.cpp) takes mass_.maxCoeff() of an empty "
-                  "vector; run_analysis (src/geompm/analysis/run.cpp) does not stop when no "
-                  "point is left";
   // Only the flyer: it leaves the mesh at t = 0.25 and the phase goes on to t = 0.5.
   std::string model = flying_block_model("numerics: {lost_points: remove}\n");
   model = replace_once(
@@ -365,14 +360,6 @@ TEST_F(RunPolicies, AllPointsRemoved) {
 // A lone block sliding at constant velocity with no load at all (no gravity) is the simplest
 // dynamic problem there is: every step should converge at once.
 TEST_F(RunPolicies, UniformMotionWithoutLoads) {
-  GTEST_SKIP() << "BUG: a lone body in rigid uniform motion with no gravity and no loads never "
-                  "converges: LagrangianProblem::evaluate (src/geompm/analysis/step.cpp) takes "
-                  "the force scale as max(|f_ext|, |f_int|, |M a|), which are all round-off "
-                  "here, so solve_newton (src/geompm/solver/newton.cpp) sees a relative residual "
-                  "of O(1) (0.9) however small the residual is, and the run stops with exit 3 at "
-                  "t = 0 (\"did not converge with the smallest allowed time step\"). With a "
-                  "second body at rest the strained empty cells between them give a force scale "
-                  "and it converges";
   std::string model = flying_block_model("");
   model = replace_once(model, "    gravity: {acceleration: [0, -10]}\n", "");
   model = replace_once(model, "duration: 0.5", "duration: 0.1");

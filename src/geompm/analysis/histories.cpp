@@ -1,5 +1,7 @@
 #include "geompm/analysis/histories.hpp"
 
+#include <limits>
+
 #include "geompm/core/tensor.hpp"
 
 namespace geompm {
@@ -44,7 +46,7 @@ double HistoryRecorder::point_set_mean(const Model& model, int set, int componen
       sum += w * field[i](component);
       weight += w;
     }
-  return weight > 0 ? sum / weight : 0.0;
+  return weight > 0 ? sum / weight : std::numeric_limits<double>::quiet_NaN();
 }
 
 std::vector<double> HistoryRecorder::initial_values(const Model& model) const {

@@ -33,6 +33,12 @@ double Model::largest_modulus() const {
 
 namespace {
 
+std::string group_names(const std::map<std::string, std::vector<Index>>& groups) {
+  std::string names;
+  for (const auto& [name, members] : groups) names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? "(none)" : names;
+}
+
 // Whether a region holds the position x (or, for a group region, the cell).
 class RegionTest {
  public:
@@ -40,12 +46,9 @@ class RegionTest {
       : region_(region), dim_(dim) {
     if (region.kind == spec::Region::Kind::Group) {
       auto it = mesh.cell_groups.find(region.group);
-      if (it == mesh.cell_groups.end()) {
-        std::string known;
-        for (const auto& [name, cells] : mesh.cell_groups) known += (known.empty() ? "" : ", ") + name;
+      if (it == mesh.cell_groups.end())
         throw InputError(region.source, fmt::format("the mesh has no region '{}'; its regions are: {}",
-                                                    region.group, known.empty() ? "(none)" : known));
-      }
+                                                    region.group, group_names(mesh.cell_groups)));
       cells_ = &it->second;
     }
   }
@@ -107,6 +110,8 @@ class RegionTest {
 
 Mesh make_mesh(const spec::Model& spec) {
   const int dim = spatial_dimension(spec.kinematics);
+  SourceLocation mesh_file = spec.mesh.source;  // errors in an imported file name the model too
+  if (!spec.mesh.file.empty()) mesh_file.key_path += ".file";
   Mesh mesh;
   if (spec.mesh.generate) {
     try {
@@ -115,13 +120,21 @@ Mesh make_mesh(const spec::Model& spec) {
       throw InputError(spec.mesh.source, e.what());
     }
   } else {
-    mesh = read_gmsh_mesh(spec.mesh.file, dim);
+    try {
+      mesh = read_gmsh_mesh(spec.mesh.file, dim);
+    } catch (const InputError& e) {
+      throw InputError(mesh_file, e.what());
+    }
   }
   if (mesh.dim() != dim)
     throw InputError(spec.mesh.source,
                      fmt::format("the mesh is {}D ({} cells) but the analysis is {}", mesh.dim(),
                                  to_string(mesh.cell_type), to_string(spec.kinematics)));
-  validate_mesh(mesh, spec.mesh.source.describe());
+  try {
+    validate_mesh(mesh, spec.mesh.file.empty() ? "generated mesh" : spec.mesh.file);
+  } catch (const InputError& e) {
+    throw InputError(mesh_file, e.what());
+  }
   if (spec.kinematics == Kinematics::Axisymmetric) {
     for (Index n = 0; n < mesh.num_nodes(); ++n)
       if (mesh.nodes[n].x() < -1e-12)
@@ -191,9 +204,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
       try {
         seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
       } catch (const std::invalid_argument& e) {
-        SourceLocation where = body.source;
-        where.key_path += ".points_per_cell";
-        throw InputError(where, e.what());
+        throw InputError(body.points_per_cell_source, e.what());
       }
       for (const auto& s : seeds) {
         if (!body_regions.back().contains(s.position, c)) continue;
@@ -238,17 +249,15 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
 
   for (const auto& phase : spec.phases)
     for (const auto& fixity : phase.fixities)
-      if (!fixity.boundary.empty() && !mesh.node_groups.count(fixity.boundary)) {
-        std::string known;
-        for (const auto& [name, nodes] : mesh.node_groups) known += (known.empty() ? "" : ", ") + name;
+      if (!fixity.boundary.empty() && !mesh.node_groups.count(fixity.boundary))
         throw InputError(fixity.source,
                          fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
-                                     fixity.boundary, known.empty() ? "(none)" : known));
-      }
+                                     fixity.boundary, group_names(mesh.node_groups)));
   for (const auto& history : spec.output.histories)
     if (!history.boundary.empty() && !mesh.node_groups.count(history.boundary))
       throw InputError(history.source,
-                       fmt::format("the mesh has no boundary '{}'", history.boundary));
+                       fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
+                                   history.boundary, group_names(mesh.node_groups)));
   return model;
 }
 

@@ -166,6 +166,10 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
                         true);
         continue;
       }
+      if (model.points.size() == 0)
+        fail(fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
+                         "up to time {:g} are in {}",
+                         phase_spec.name, t + dt_try, time, options.output_dir.string()));
       if (!step.lost.empty() && model.spec.numerics.lost_points == spec::LostPointPolicy::Stop) {
         std::string where;
         for (std::size_t k = 0; k < std::min<std::size_t>(step.lost.size(), 5); ++k)

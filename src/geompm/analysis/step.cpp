@@ -45,7 +45,12 @@ class LagrangianProblem final : public NonlinearProblem {
     const auto& free = grid_.free_index();
     for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
       if (free[d] >= 0) residual(free[d]) = r(d);
+    // The forces in play; in dynamics also the momentum rate M v / dt, so that a body moving
+    // freely without loads is measured against its own motion, not against round-off.
     force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
+    if (dynamic_)
+      force_scale = std::max(force_scale,
+                             grid_.mass().cwiseProduct(grid_.velocity()).norm() / newmark_.dt);
     if (tangent && dynamic_) {
       double* values = tangent->valuePtr();
       for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
@@ -55,8 +60,12 @@ class LagrangianProblem final : public NonlinearProblem {
   }
 
   double increment_norm(const Vector& x) const override {
-    const_cast<LagrangianProblem*>(this)->scatter(x);
-    return du_.norm();
+    // Free unknowns from x, constrained ones (fixed: zero) from du_.
+    double sum = x.squaredNorm();
+    const auto& free = grid_.free_index();
+    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+      if (free[d] < 0) sum += du_(d) * du_(d);
+    return std::sqrt(sum);
   }
 
   const Vector& internal_force() const { return f_int_; }

@@ -33,35 +33,14 @@ SymmetricEigen symmetric_eigen(const Mat3& a) {
   return {solver.eigenvalues(), solver.eigenvectors()};
 }
 
-Mat3 isotropic_function(const SymmetricEigen& e, const std::function<double(double)>& f) {
-  Vec3 fv(f(e.values(0)), f(e.values(1)), f(e.values(2)));
-  return e.vectors * fv.asDiagonal() * e.vectors.transpose();
-}
-
-Tensor4 isotropic_function_derivative(const SymmetricEigen& e,
-                                      const std::function<double(double)>& f,
-                                      const std::function<double(double)>& df) {
-  // Divided differences; eigenvalues closer than a relative 1e-8 count as equal, where the
-  // divided difference tends to the derivative (the formula stays exact in the limit).
-  Mat3 theta;
-  const double scale = std::max(1.0, e.values.cwiseAbs().maxCoeff());
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      const double xa = e.values(a), xb = e.values(b);
-      if (std::abs(xa - xb) <= 1e-8 * scale)
-        theta(a, b) = df(0.5 * (xa + xb));
-      else
-        theta(a, b) = (f(xa) - f(xb)) / (xa - xb);
-    }
+Tensor4 eigen_derivative4(const Mat3& q, const Mat3& theta) {
   // D_ijkl = sum_ab theta_ab Q_ia Q_jb (Q_ka Q_lb + Q_kb Q_la) / 2   (symmetric in kl)
-  const Mat3& q = e.vectors;
   Tensor4 d = Tensor4::Zero();
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
-      const Vec3 qa = q.col(a), qb = q.col(b);
-      const Mat3 mab = qa * qb.transpose();
+      const Mat3 mab = q.col(a) * q.col(b).transpose();
       const Mat3 sym = 0.5 * (mab + mab.transpose());
-      d += theta(a, b) * flatten(mab) * flatten(sym).transpose();
+      d.noalias() += theta(a, b) * flatten(mab) * flatten(sym).transpose();
     }
   return d;
 }

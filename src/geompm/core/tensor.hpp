@@ -4,7 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <functional>
+#include <cmath>
+#include <algorithm>
 
 #include "geompm/core/types.hpp"
 
@@ -44,15 +45,37 @@ struct SymmetricEigen {
 SymmetricEigen symmetric_eigen(const Mat3& a);
 
 /// f(A) = Q diag(f(values)) Q^T for symmetric A.
-Mat3 isotropic_function(const SymmetricEigen& e, const std::function<double(double)>& f);
+template <class F>
+Mat3 isotropic_function(const SymmetricEigen& e, F&& f) {
+  const Vec3 fv(f(e.values(0)), f(e.values(1)), f(e.values(2)));
+  return e.vectors * fv.asDiagonal() * e.vectors.transpose();
+}
+
+/// Divided differences of f over the eigenvalues x: Theta_ab = (f(x_a) - f(x_b)) / (x_a - x_b),
+/// and f'(x_a) where two eigenvalues coincide (to a relative 1e-8), the limit of the former.
+template <class F, class DF>
+Mat3 divided_differences(const Vec3& x, F&& f, DF&& df) {
+  Mat3 theta;
+  const double scale = std::max(1.0, x.cwiseAbs().maxCoeff());
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b) {
+      const double d = x(a) - x(b);
+      theta(a, b) = theta(b, a) = std::abs(d) <= 1e-8 * scale ? df(0.5 * (x(a) + x(b)))
+                                                              : (f(x(a)) - f(x(b))) / d;
+    }
+  return theta;
+}
+
+/// The Tensor4 of eq. 3.6 from the eigenvectors (columns of q) and the divided differences.
+Tensor4 eigen_derivative4(const Mat3& q, const Mat3& theta);
 
 /// Derivative d f(A) / dA of an isotropic tensor function of a symmetric A, as a Tensor4 acting
-/// on symmetric increments: Q (Theta o (Q^T dA Q)) Q^T with Theta_ab the divided differences
-/// (f(x_a) - f(x_b)) / (x_a - x_b), and f'(x_a) where the eigenvalues coincide. Valid for
-/// repeated eigenvalues (the limit is taken, not avoided).
-Tensor4 isotropic_function_derivative(const SymmetricEigen& e,
-                                      const std::function<double(double)>& f,
-                                      const std::function<double(double)>& df);
+/// on symmetric increments: Q (Theta o (Q^T dA Q)) Q^T (Daleckii-Krein, docs/theory.md eq. 3.6).
+/// Valid for repeated eigenvalues (the limit is taken, not avoided).
+template <class F, class DF>
+Tensor4 isotropic_function_derivative(const SymmetricEigen& e, F&& f, DF&& df) {
+  return eigen_derivative4(e.vectors, divided_differences(e.values, f, df));
+}
 
 /// Matrix logarithm and exponential of a symmetric matrix (positive definite for the log).
 Mat3 symmetric_log(const Mat3& a);

@@ -140,8 +140,12 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context) {
     body.region = read_region(entry.required("region"), context);
     // 4 points per cell is a quadrilateral's 2 x 2; a hexahedron has no 4-point rule.
     body.points_per_cell = context.cell_type == CellType::Hex8 ? 8 : 4;
-    if (auto count = entry.find("points_per_cell"))
+    body.points_per_cell_source = body.source;
+    body.points_per_cell_source.key_path += ".points_per_cell";
+    if (auto count = entry.find("points_per_cell")) {
       body.points_per_cell = read_points_per_cell(*count, context);
+      body.points_per_cell_source = count->where();
+    }
     if (auto velocity = entry.find("initial_velocity"))
       body.initial_velocity =
           read_expression_vector(*velocity, context.dimension, velocity_variables, false, "0");

@@ -49,6 +49,7 @@ struct Body {
   int points_per_cell = 4;
   std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
   SourceLocation source;
+  SourceLocation points_per_cell_source;  // where the count was given (the body if defaulted)
 };
 
 /// Named set of material points (e.g. the head of a pile), for prescribed motion, loads and

@@ -156,7 +156,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       }
     }
   }
-  const double tiny = 1e-14 * std::max(mass_.maxCoeff(), 0.0);
+  const double tiny = n_dofs > 0 ? 1e-14 * std::max(mass_.maxCoeff(), 0.0) : 0.0;
   for (Index d = 0; d < n_dofs; ++d) {
     if (mass_(d) > tiny) {
       velocity_(d) /= mass_(d);

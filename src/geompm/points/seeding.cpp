@@ -193,8 +193,12 @@ std::vector<int> allowed_points_per_cell(CellType type) {
 std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axisymmetric) {
   const auto allowed = allowed_points_per_cell(mesh.cell_type);
   if (std::find(allowed.begin(), allowed.end(), count) == allowed.end())
+  {
+    std::string list;
+    for (int n : allowed) list += (list.empty() ? "" : ", ") + std::to_string(n);
     throw std::invalid_argument(std::to_string(count) + " points per cell is not available for " +
-                                to_string(mesh.cell_type));
+                                to_string(mesh.cell_type) + " cells; expected one of " + list);
+  }
   return dispatch_cell_type(mesh.cell_type, [&](auto element) -> std::vector<SeedPoint> {
     using E = decltype(element);
     const auto X = cell_coordinates<E>(mesh, c);
