@@ -59,7 +59,18 @@ class OutputWriter {
         points_series_(dir / "points.pvd"),
         grid_series_(dir / "grid.pvd"),
         recorder_(model),
-        history_(dir / "history.csv", recorder_.columns()) {}
+        history_(dir / "history.csv", recorder_.columns()),
+        newton_(dir / "newton.csv",
+                {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
+                 "converged"}) {}
+
+  /// Every Newton attempt, converged or cut back: one row per iteration.
+  void newton_log(int step_number, double time, double dt, const NewtonResult& newton) {
+    for (std::size_t k = 0; k < newton.residuals.size(); ++k)
+      newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
+                      k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
+                      newton.converged ? 1.0 : 0.0});
+  }
 
   void initial() {
     write_points(0.0, 0);
@@ -110,6 +121,7 @@ class OutputWriter {
   PvdSeries points_series_, grid_series_;
   HistoryRecorder recorder_;
   HistoryWriter history_;
+  HistoryWriter newton_;
 };
 
 }  // namespace
@@ -152,6 +164,7 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
       double dt_try = std::min(dt, remaining);
       if (remaining - dt_try < 0.01 * dt_try) dt_try = remaining;  // no sliver of a last step
       StepResult step = stepper.advance(phase, t, dt_try);
+      output.newton_log(step_number + 1, time + dt_try, dt_try, step.newton);
       if (!step.converged) {
         ++summary.cutbacks;
         dt = dt_try * ts.cutback;
