@@ -2,9 +2,9 @@
 //
 // Exit codes: 0 success, 1 bad command line, 2 bad input (model or mesh file), 3 the run stopped
 // (no convergence at the smallest time step, a point left the mesh), 4 an internal error.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <omp.h>
+#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -25,8 +25,7 @@ int run_command(const std::string& model_file, std::string output, int threads, 
   // Read and build everything before anything is written, so bad input leaves no output.
   const auto spec = geompm::read_model(model_file);
   auto model = geompm::build_model(spec);
-  if (output.empty())
-    output = std::filesystem::path(model_file).stem().string() + "_results";
+  if (output.empty()) output = std::filesystem::path(model_file).stem().string() + "_results";
   if (!quiet) std::cerr << geompm::describe_model(*model);
   geompm::RunOptions options;
   options.output_dir = output;
@@ -61,7 +60,8 @@ int main(int argc, char** argv) {
   run->add_flag("-q,--quiet", quiet,
                 "no model description or progress line (the closing summary is still printed)");
 
-  auto* check = app.add_subcommand("check", "validate a model and print a summary, without running");
+  auto* check =
+      app.add_subcommand("check", "validate a model and print a summary, without running");
   check->add_option("model", model_file, "model file")->required();
 
   geompm::PlotRequest plot_request;
@@ -81,7 +81,9 @@ int main(int argc, char** argv) {
   std::string cell = "tri3", msh = "mesh.msh";
   auto* mesh = app.add_subcommand("mesh", "write an unstructured Gmsh mesh of a rectangle or box");
   mesh->add_option("--origin", origin, "lower corner (2 or 3 numbers)")->expected(2, 3);
-  mesh->add_option("--size", size, "extent (2 numbers: rectangle, 3: box)")->required()->expected(2, 3);
+  mesh->add_option("--size", size, "extent (2 numbers: rectangle, 3: box)")
+      ->required()
+      ->expected(2, 3);
   mesh->add_option("--h", h, "cell size")->required()->check(CLI::PositiveNumber);
   mesh->add_option("--refine", refine, "refinement box: lower and upper corner (4 or 6 numbers)")
       ->expected(4, 6);
@@ -109,7 +111,8 @@ int main(int argc, char** argv) {
     if (*check) return check_command(model_file);
     if (*mesh) {
       const auto type = geompm::parse_cell_type(cell);
-      if (!type) throw geompm::InputError("--cell: expected tri3, tri6, quad4 or tet4, got '" + cell + "'");
+      if (!type)
+        throw geompm::InputError("--cell: expected tri3, tri6, quad4 or tet4, got '" + cell + "'");
       const bool box = size.size() == 3;
       auto vec = [](const std::vector<double>& v, std::size_t offset) {
         geompm::Vec3 x = geompm::Vec3::Zero();
@@ -128,13 +131,15 @@ int main(int argc, char** argv) {
           hi(i) = refine[half + i];
         }
         region = std::make_pair(lo, hi);
-        if (!(h_refined > 0)) throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
+        if (!(h_refined > 0))
+          throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
       }
       try {
         if (box)
           geompm::write_gmsh_box(msh, vec(origin, 0), vec(size, 0), h, *type, region, h_refined);
         else
-          geompm::write_gmsh_rectangle(msh, vec(origin, 0), vec(size, 0), h, *type, region, h_refined);
+          geompm::write_gmsh_rectangle(msh, vec(origin, 0), vec(size, 0), h, *type, region,
+                                       h_refined);
       } catch (const std::invalid_argument& e) {
         throw geompm::InputError(std::string("geompm mesh: ") + e.what());
       }

@@ -56,8 +56,8 @@ TEST_P(ColumnTest, OneLoadStepMatchesTheHenckyClosedForm) {
   ASSERT_EQ(run.summary.steps, 1);
   const testing::Column column;
   const auto e = column_errors(*run.model, column, GetParam().vertical);
-  std::printf("[column %s, one step] stress error %.4f, settlement error %.4f %%\n", GetParam().file,
-              e.stress_error, 100 * e.settlement_error);
+  std::printf("[column %s, one step] stress error %.4f, settlement error %.4f %%\n",
+              GetParam().file, e.stress_error, 100 * e.settlement_error);
   EXPECT_LT(e.settlement_error, 0.01);
   // Piecewise-constant stress in cells of height h over a linear field: the mean point error is
   // about h / (4 l0) = 2 / 200 = 0.01 of rho0 g l0 with two point rows per cell.
@@ -114,9 +114,10 @@ TEST(ColumnDualDomain, StressErrorBelowStandardMpm) {
   const auto a = testing::run_spec(standard, "column_standard");
   const auto b = testing::run_spec(ddmp, "column_ddmp");
   const auto ea = column_errors(*a.model, column, 1), eb = column_errors(*b.model, column, 1);
-  std::printf("[column 20 steps] stress error standard %.4f, DDMP %.4f; settlement error %.2f %% vs "
-              "%.2f %%\n", ea.stress_error, eb.stress_error, 100 * ea.settlement_error,
-              100 * eb.settlement_error);
+  std::printf(
+      "[column 20 steps] stress error standard %.4f, DDMP %.4f; settlement error %.2f %% vs "
+      "%.2f %%\n",
+      ea.stress_error, eb.stress_error, 100 * ea.settlement_error, 100 * eb.settlement_error);
   EXPECT_LT(eb.stress_error, 0.8 * ea.stress_error);
   EXPECT_LT(eb.settlement_error, ea.settlement_error);
   EXPECT_NEAR(b.column("base_reaction").back(), eb.total_weight, 1e-8 * eb.total_weight);

@@ -24,7 +24,7 @@ OedometerResult run_oedometer(int cells) {
   grid.axes[0] = {AxisSegment{1.0, 1, 1.0}};
   grid.axes[1] = {AxisSegment{1.0 + h, cells + 1, 1.0}};
   spec.point_sets.at(0).region.min.y() = 1.0 - h / 2;  // the top row of points
-  spec.phases.at(0).duration = 0.1;                     // one step of 1 % compression
+  spec.phases.at(0).duration = 0.1;                    // one step of 1 % compression
   const auto run = testing::run_spec(spec, "oedometer_" + std::to_string(cells));
   const double E = 10000, nu = 0.3;
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
@@ -36,7 +36,8 @@ OedometerResult run_oedometer(int cells) {
   OedometerResult r;
   r.reaction_error = std::abs(reaction / exact - 1.0);
   r.displacement_error = std::abs(d - 0.01) / 0.01;
-  r.equilibrium_error = std::abs(reaction + run.column("base_reaction").back()) / std::abs(reaction);
+  r.equilibrium_error =
+      std::abs(reaction + run.column("base_reaction").back()) / std::abs(reaction);
   return r;
 }
 

@@ -10,8 +10,8 @@ namespace geompm {
 namespace {
 
 TEST(VibratingBar, PeriodAmplitudeAndEnergyMatchTheClosedForm) {
-  const auto run = testing::run_spec(testing::read_example("vibrating_bar/vibrating_bar.yaml"),
-                                     "vibrating_bar");
+  const auto run =
+      testing::run_spec(testing::read_example("vibrating_bar/vibrating_bar.yaml"), "vibrating_bar");
   const auto t = run.column("time");
   const auto v = run.column("v_cm");
   const auto kinetic = run.column("kinetic_energy");

@@ -42,13 +42,13 @@ std::string group_names(const std::map<std::string, std::vector<Index>>& groups)
 // Whether a region holds the position x (or, for a group region, the cell).
 class RegionTest {
  public:
-  RegionTest(const spec::Region& region, const Mesh& mesh, int dim)
-      : region_(region), dim_(dim) {
+  RegionTest(const spec::Region& region, const Mesh& mesh, int dim) : region_(region), dim_(dim) {
     if (region.kind == spec::Region::Kind::Group) {
       auto it = mesh.cell_groups.find(region.group);
       if (it == mesh.cell_groups.end())
-        throw InputError(region.source, fmt::format("the mesh has no region '{}'; its regions are: {}",
-                                                    region.group, group_names(mesh.cell_groups)));
+        throw InputError(region.source,
+                         fmt::format("the mesh has no region '{}'; its regions are: {}",
+                                     region.group, group_names(mesh.cell_groups)));
       cells_ = &it->second;
     }
   }
@@ -183,11 +183,11 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
     if (auto box = body_regions.back().bounds()) {
       for (int d = 0; d < dim; ++d)
         if (box->first(d) < lo(d) - tol || box->second(d) > hi(d) + tol)
-          throw InputError(body.region.source,
-                           fmt::format("body '{}' reaches outside the mesh: its region spans "
-                                       "[{}, {}] in {} but the mesh spans [{}, {}]",
-                                       body.name, box->first(d), box->second(d), "xyz"[d], lo(d),
-                                       hi(d)));
+          throw InputError(
+              body.region.source,
+              fmt::format("body '{}' reaches outside the mesh: its region spans "
+                          "[{}, {}] in {} but the mesh spans [{}, {}]",
+                          body.name, box->first(d), box->second(d), "xyz"[d], lo(d), hi(d)));
     }
     Index material = 0;
     for (std::size_t m = 0; m < spec.materials.size(); ++m)
@@ -198,7 +198,8 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
 
     const Index before = model->points.size();
     for (Index c = 0; c < mesh.num_cells(); ++c) {
-      if (body.region.kind == spec::Region::Kind::Group && !body_regions.back().contains(Vec3::Zero(), c))
+      if (body.region.kind == spec::Region::Kind::Group &&
+          !body_regions.back().contains(Vec3::Zero(), c))
         continue;
       std::vector<SeedPoint> seeds;
       try {
@@ -279,7 +280,8 @@ std::string describe_model(const Model& model) {
   for (std::size_t m = 0; m < spec.materials.size(); ++m) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
-    out += fmt::format("material   {}: {}{}\n", spec.materials[m].name, spec.materials[m].model, params);
+    out += fmt::format("material   {}: {}{}\n", spec.materials[m].name, spec.materials[m].model,
+                       params);
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;
@@ -293,13 +295,12 @@ std::string describe_model(const Model& model) {
     out += fmt::format("point set  {}: {} points\n", model.point_set_names[k], count);
   }
   for (const auto& phase : spec.phases)
-    out += fmt::format("phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}\n", phase.name,
-                       phase.duration, phase.time_step.initial, phase.time_step.min,
-                       phase.time_step.max,
-                       phase.dynamics.quasi_static
-                           ? std::string("quasi-static")
-                           : fmt::format("Newmark beta={:g} gamma={:g}", phase.dynamics.beta,
-                                         phase.dynamics.gamma));
+    out += fmt::format(
+        "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}\n", phase.name, phase.duration,
+        phase.time_step.initial, phase.time_step.min, phase.time_step.max,
+        phase.dynamics.quasi_static ? std::string("quasi-static")
+                                    : fmt::format("Newmark beta={:g} gamma={:g}",
+                                                  phase.dynamics.beta, phase.dynamics.gamma));
   return out;
 }
 

@@ -22,8 +22,8 @@ struct Model {
   std::unique_ptr<PointLocator> locator;
   std::vector<std::unique_ptr<Material>> materials;  // in the order of spec.materials
   MaterialPoints points;
-  std::vector<std::string> point_set_names;          // bit k of MaterialPoints::sets
-  double lost_mass = 0.0;                            // of points removed after leaving the mesh
+  std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
+  double lost_mass = 0.0;                    // of points removed after leaving the mesh
   Index lost_points = 0;
 
   Kinematics kinematics() const { return spec.kinematics; }

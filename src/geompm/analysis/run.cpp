@@ -60,9 +60,8 @@ class OutputWriter {
         grid_series_(dir / "grid.pvd"),
         recorder_(model),
         history_(dir / "history.csv", recorder_.columns()),
-        newton_(dir / "newton.csv",
-                {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
-                 "converged"}) {}
+        newton_(dir / "newton.csv", {"step", "time", "dt", "iteration", "relative_residual",
+                                     "relative_correction", "converged"}) {}
 
   /// Every Newton attempt, converged or cut back: one row per iteration.
   void newton_log(int step_number, double time, double dt, const NewtonResult& newton) {
@@ -169,32 +168,32 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
         ++summary.cutbacks;
         dt = dt_try * ts.cutback;
         if (dt < ts.min * (1.0 - 1e-12))
-          fail(fmt::format("phase '{}': the step at time {:g} did not converge with the smallest "
-                           "allowed time step ({:g}): {}. Results up to time {:g} are in {}",
-                           phase_spec.name, t, dt_try, step.newton.failure, time,
-                           options.output_dir.string()));
+          fail(fmt::format(
+              "phase '{}': the step at time {:g} did not converge with the smallest "
+              "allowed time step ({:g}): {}. Results up to time {:g} are in {}",
+              phase_spec.name, t, dt_try, step.newton.failure, time, options.output_dir.string()));
         progress.update(fmt::format("phase {} | step {} | t {:.4g} | cut back to dt {:.3g}: {}",
-                                    phase_spec.name, step_number + 1, t, dt,
-                                    step.newton.failure),
+                                    phase_spec.name, step_number + 1, t, dt, step.newton.failure),
                         true);
         continue;
       }
       if (model.points.size() == 0)
-        fail(fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
-                         "up to time {:g} are in {}",
-                         phase_spec.name, t + dt_try, time, options.output_dir.string()));
+        fail(
+            fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
+                        "up to time {:g} are in {}",
+                        phase_spec.name, t + dt_try, time, options.output_dir.string()));
       if (!step.lost.empty() && model.spec.numerics.lost_points == spec::LostPointPolicy::Stop) {
         std::string where;
         for (std::size_t k = 0; k < std::min<std::size_t>(step.lost.size(), 5); ++k)
           where += fmt::format("\n  point {} would move to ({:.6g}, {:.6g}, {:.6g})",
-                               step.lost[k].first, step.lost[k].second.x(),
-                               step.lost[k].second.y(), step.lost[k].second.z());
-        fail(fmt::format("phase '{}', time {:g}: {} material point(s) left the mesh (policy "
-                         "numerics.lost_points = stop):{}{}\nEnlarge the mesh or set "
-                         "lost_points: remove. Results up to time {:g} are in {}",
-                         phase_spec.name, t + dt_try, step.lost.size(), where,
-                         step.lost.size() > 5 ? "\n  ..." : "", time,
-                         options.output_dir.string()));
+                               step.lost[k].first, step.lost[k].second.x(), step.lost[k].second.y(),
+                               step.lost[k].second.z());
+        fail(
+            fmt::format("phase '{}', time {:g}: {} material point(s) left the mesh (policy "
+                        "numerics.lost_points = stop):{}{}\nEnlarge the mesh or set "
+                        "lost_points: remove. Results up to time {:g} are in {}",
+                        phase_spec.name, t + dt_try, step.lost.size(), where,
+                        step.lost.size() > 5 ? "\n  ..." : "", time, options.output_dir.string()));
       }
       t += dt_try;
       time += dt_try;
@@ -210,15 +209,18 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
       output.step(stepper.grid(), step, phase, t, time, step_number, dt_try, vtk);
 
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-      const double eta = done_duration > 0 ? elapsed * (total_duration - done_duration) / done_duration : 0;
-      progress.update(fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | "
-                                  "r {:.2e} | ETA {}",
-                                  phase_spec.name, step_number, t, phase_spec.duration, dt_try,
-                                  step.newton.iterations, step.newton.residuals.back(),
-                                  format_duration(eta)));
+      const double eta =
+          done_duration > 0 ? elapsed * (total_duration - done_duration) / done_duration : 0;
+      progress.update(
+          fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | "
+                      "r {:.2e} | ETA {}",
+                      phase_spec.name, step_number, t, phase_spec.duration, dt_try,
+                      step.newton.iterations, step.newton.residuals.back(), format_duration(eta)));
 
-      if (step.newton.iterations <= ts.easy_iterations) dt = std::min(dt_try * ts.growth, ts.max);
-      else dt = std::min(dt_try, ts.max);
+      if (step.newton.iterations <= ts.easy_iterations)
+        dt = std::min(dt_try * ts.growth, ts.max);
+      else
+        dt = std::min(dt_try, ts.max);
     }
   }
   progress.finish();

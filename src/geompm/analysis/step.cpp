@@ -21,8 +21,8 @@ GridSettings grid_settings(const Model& model) {
 // R = f_ext - f_int - M a (seed eq. 6) with a from Newmark (eq. 8) in dynamics.
 class LagrangianProblem final : public NonlinearProblem {
  public:
-  LagrangianProblem(GridSystem& grid, const MaterialPoints& points, const Vector& f_ext,
-                    Vector& du, bool dynamic, const Newmark& newmark)
+  LagrangianProblem(GridSystem& grid, const MaterialPoints& points, const Vector& f_ext, Vector& du,
+                    bool dynamic, const Newmark& newmark)
       : grid_(grid), points_(points), f_ext_(f_ext), du_(du), dynamic_(dynamic), newmark_(newmark) {
     // Positions of the diagonal entries, to add the inertia term M / (beta dt^2).
     const SparseMatrix& pattern = grid.pattern();
@@ -49,8 +49,8 @@ class LagrangianProblem final : public NonlinearProblem {
     // freely without loads is measured against its own motion, not against round-off.
     force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
     if (dynamic_)
-      force_scale = std::max(force_scale,
-                             grid_.mass().cwiseProduct(grid_.velocity()).norm() / newmark_.dt);
+      force_scale =
+          std::max(force_scale, grid_.mass().cwiseProduct(grid_.velocity()).norm() / newmark_.dt);
     if (tangent && dynamic_) {
       double* values = tangent->valuePtr();
       for (Index d = 0; d < static_cast<Index>(free.size()); ++d)

@@ -20,9 +20,9 @@ struct StepResult {
   NewtonResult newton;
   // Grid solution of the converged step (dof-indexed over grid.active_nodes()).
   Vector displacement, velocity, acceleration;
-  Vector reaction;                        // f_int + M a - f_ext, non-zero at constrained dofs
-  std::vector<char> constrained;          // per dof
-  std::map<int, Vec3> set_reactions;      // point-set bit -> force its prescribed motion exerts
+  Vector reaction;                    // f_int + M a - f_ext, non-zero at constrained dofs
+  std::vector<char> constrained;      // per dof
+  std::map<int, Vec3> set_reactions;  // point-set bit -> force its prescribed motion exerts
   Vec3 gravity = Vec3::Zero();
   std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
 };

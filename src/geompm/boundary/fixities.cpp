@@ -34,19 +34,20 @@ std::vector<ResolvedFixity> resolve_fixities(const Mesh& mesh,
           if (b - a <= tol) normal_axis = d;
         }
         if (normal_axis < 0)
-          throw InputError(f.source, fmt::format("boundary '{}' is not a plane normal to x, y or z, "
-                                                 "so 'normal' is ambiguous; fix components instead",
-                                                 f.boundary));
+          throw InputError(f.source,
+                           fmt::format("boundary '{}' is not a plane normal to x, y or z, "
+                                       "so 'normal' is ambiguous; fix components instead",
+                                       f.boundary));
       }
     } else {
       r.name = fmt::format("plane {}={:g}", "xyz"[f.plane_axis], f.plane_value);
       for (Index n = 0; n < mesh.num_nodes(); ++n)
         if (std::abs(mesh.nodes[n](f.plane_axis) - f.plane_value) <= tol) r.nodes.push_back(n);
       if (r.nodes.empty())
-        throw InputError(f.source, fmt::format("no mesh node lies on the plane {} (the mesh spans "
-                                               "[{:g}, {:g}] in {})",
-                                               r.name, lo(f.plane_axis), hi(f.plane_axis),
-                                               "xyz"[f.plane_axis]));
+        throw InputError(
+            f.source, fmt::format("no mesh node lies on the plane {} (the mesh spans "
+                                  "[{:g}, {:g}] in {})",
+                                  r.name, lo(f.plane_axis), hi(f.plane_axis), "xyz"[f.plane_axis]));
       normal_axis = f.plane_axis;
     }
     if (f.normal_only)

@@ -13,8 +13,8 @@
 namespace geompm {
 
 struct ResolvedFixity {
-  std::string name;           // boundary name, or "plane x=..."
-  std::vector<Index> nodes;   // mesh nodes
+  std::string name;          // boundary name, or "plane x=..."
+  std::vector<Index> nodes;  // mesh nodes
   std::array<bool, 3> components = {false, false, false};
 };
 

@@ -45,6 +45,31 @@ Tensor4 eigen_derivative4(const Mat3& q, const Mat3& theta) {
   return d;
 }
 
+Tensor4 principal_function_derivative4(const SymmetricEigen& eps, const Vec3& tau,
+                                       const Mat3& dtau_deps) {
+  const Vec3& x = eps.values;
+  const Mat3& c = dtau_deps;
+  const double scale = std::max(1.0, x.cwiseAbs().maxCoeff());
+  Mat3 spin = Mat3::Zero();  // the a = b terms come from c below, not from eq. 3.6
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      if (a == b) continue;
+      const double d = x(a) - x(b);
+      spin(a, b) = std::abs(d) <= 1e-8 * scale
+                       ? 0.5 * (c(a, a) - c(a, b) - c(b, a) + c(b, b))
+                       : (tau(a) - tau(b)) / d;
+    }
+  Tensor4 d = eigen_derivative4(eps.vectors, spin);
+  for (int a = 0; a < 3; ++a) {
+    const Vec9 ma = flatten(eps.vectors.col(a) * eps.vectors.col(a).transpose());
+    for (int b = 0; b < 3; ++b) {
+      const Vec9 mb = flatten(eps.vectors.col(b) * eps.vectors.col(b).transpose());
+      d.noalias() += c(a, b) * ma * mb.transpose();
+    }
+  }
+  return d;
+}
+
 Mat3 symmetric_log(const Mat3& a) {
   return isotropic_function(symmetric_eigen(a), [](double x) { return std::log(x); });
 }

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 
 #include "geompm/core/types.hpp"
 
@@ -60,8 +60,8 @@ Mat3 divided_differences(const Vec3& x, F&& f, DF&& df) {
   for (int a = 0; a < 3; ++a)
     for (int b = a; b < 3; ++b) {
       const double d = x(a) - x(b);
-      theta(a, b) = theta(b, a) = std::abs(d) <= 1e-8 * scale ? df(0.5 * (x(a) + x(b)))
-                                                              : (f(x(a)) - f(x(b))) / d;
+      theta(a, b) = theta(b, a) =
+          std::abs(d) <= 1e-8 * scale ? df(0.5 * (x(a) + x(b))) : (f(x(a)) - f(x(b))) / d;
     }
   return theta;
 }
@@ -76,6 +76,17 @@ template <class F, class DF>
 Tensor4 isotropic_function_derivative(const SymmetricEigen& e, F&& f, DF&& df) {
   return eigen_derivative4(e.vectors, divided_differences(e.values, f, df));
 }
+
+/// Derivative of a tensor function given by its principal values, tau = sum_a tau_a m_a with
+/// m_a = q_a (x) q_a, where each tau_a may depend on all three principal values eps_b of the
+/// argument (a return mapping in principal stresses, docs/materials.md eq. M.7):
+///   D = sum_ab C_ab m_a (x) m_b + sum_{a != b} Theta_ab (spin terms of eq. 3.6),
+///   C_ab = d tau_a / d eps_b,   Theta_ab = (tau_a - tau_b) / (eps_a - eps_b).
+/// Where eps_a and eps_b coincide (to the relative 1e-8 of divided_differences) Theta_ab takes
+/// its limit (C_aa - C_ab - C_ba + C_bb) / 2, valid because an isotropic function has
+/// tau_a = tau_b there. For tau_a = f(eps_a) this is isotropic_function_derivative.
+Tensor4 principal_function_derivative4(const SymmetricEigen& eps, const Vec3& tau,
+                                       const Mat3& dtau_deps);
 
 /// Matrix logarithm and exponential of a symmetric matrix (positive definite for the log).
 Mat3 symmetric_log(const Mat3& a);

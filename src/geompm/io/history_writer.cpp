@@ -53,14 +53,13 @@ CsvTable read_csv(const std::filesystem::path& file) {
         std::size_t used = 0;
         row.push_back(std::stod(cell, &used));
       } catch (const std::exception&) {
-        throw InputError(fmt::format("{}:{}: '{}' is not a number", file.string(), line_number,
-                                     cell));
+        throw InputError(
+            fmt::format("{}:{}: '{}' is not a number", file.string(), line_number, cell));
       }
     }
     if (row.size() != table.columns.size())
-      throw InputError(fmt::format("{}:{}: {} values, expected {} (one per column)",
-                                   file.string(), line_number, row.size(),
-                                   table.columns.size()));
+      throw InputError(fmt::format("{}:{}: {} values, expected {} (one per column)", file.string(),
+                                   line_number, row.size(), table.columns.size()));
     table.rows.push_back(std::move(row));
   }
   return table;

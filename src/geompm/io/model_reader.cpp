@@ -152,9 +152,8 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section =
-      node.map({"interpolation", "empty_cell_stiffness", "buffer_layers", "lost_points",
-                "linear_solver"});
+  const yaml::Map section = node.map(
+      {"interpolation", "empty_cell_stiffness", "buffer_layers", "lost_points", "linear_solver"});
   spec::Numerics numerics;
   if (auto interpolation = section.find("interpolation"))
     numerics.interpolation = interpolation->choice({"standard", "ddmp"}) == "ddmp"

@@ -18,14 +18,14 @@ namespace geompm::spec {
 
 struct Mesh {
   std::optional<StructuredMeshSpec> generate;  // either generate ...
-  std::string file;                             // ... or a Gmsh .msh file (absolute path)
+  std::string file;                            // ... or a Gmsh .msh file (absolute path)
   SourceLocation source;
 };
 
 struct Material {
   std::string name;
-  std::string model;                          // registered name, e.g. "linear_elastic"
-  std::map<std::string, double> parameters;   // E, nu, density, ...
+  std::string model;                         // registered name, e.g. "linear_elastic"
+  std::map<std::string, double> parameters;  // E, nu, density, ...
   SourceLocation source;
 };
 
@@ -33,11 +33,11 @@ struct Material {
 struct Region {
   enum class Kind { All, Group, Box, Polygon, Circle };
   Kind kind = Kind::All;
-  std::string group;            // Group: a region (cell group) of the mesh
-  Vec3 min = Vec3::Zero();      // Box
+  std::string group;        // Group: a region (cell group) of the mesh
+  Vec3 min = Vec3::Zero();  // Box
   Vec3 max = Vec3::Zero();
-  std::vector<Vec3> polygon;    // Polygon (2D), counter-clockwise or clockwise
-  Vec3 center = Vec3::Zero();   // Circle (2D) or sphere (3D)
+  std::vector<Vec3> polygon;   // Polygon (2D), counter-clockwise or clockwise
+  Vec3 center = Vec3::Zero();  // Circle (2D) or sphere (3D)
   double radius = 0.0;
   SourceLocation source;
 };
@@ -63,10 +63,10 @@ struct PointSet {
 
 /// Fixity of grid nodes: on a named boundary of the mesh, or on a plane x_axis = value.
 struct Fixity {
-  std::string boundary;                 // empty when a plane is given
-  int plane_axis = -1;                  // 0, 1, 2
+  std::string boundary;  // empty when a plane is given
+  int plane_axis = -1;   // 0, 1, 2
   double plane_value = 0.0;
-  bool normal_only = false;             // "normal": only the component normal to the boundary
+  bool normal_only = false;  // "normal": only the component normal to the boundary
   std::array<bool, 3> components = {false, false, false};  // when not normal_only
   SourceLocation source;
 };
@@ -127,27 +127,27 @@ struct Phase {
 
 /// One column of the history CSV.
 struct History {
-  std::string name;      // column name; defaults to quantity[_target][_component]
-  std::string quantity;  // reaction | displacement | velocity | position | kinetic_energy |
-                         // strain_energy | newton_iterations | time_step | load
-  std::string boundary;  // reaction on a boundary
-  std::string point_set; // reaction, displacement, velocity, position, load of a point set
-  int component = -1;    // 0, 1, 2; -1 for scalars
+  std::string name;       // column name; defaults to quantity[_target][_component]
+  std::string quantity;   // reaction | displacement | velocity | position | kinetic_energy |
+                          // strain_energy | newton_iterations | time_step | load
+  std::string boundary;   // reaction on a boundary
+  std::string point_set;  // reaction, displacement, velocity, position, load of a point set
+  int component = -1;     // 0, 1, 2; -1 for scalars
   SourceLocation source;
 };
 
 struct Plot {
-  std::string file;                // PNG, relative to the output directory
-  std::string x;                   // history column
-  std::vector<std::string> y;      // history columns
+  std::string file;                     // PNG, relative to the output directory
+  std::string x;                        // history column
+  std::vector<std::string> y;           // history columns
   double x_scale = 1.0, y_scale = 1.0;  // e.g. -1 to plot settlement downward as positive
   std::string title;
   SourceLocation source;
 };
 
 struct Output {
-  int vtk_every = 1;          // write ParaView files every n converged steps (0 = never)
-  bool vtk_grid = true;       // also write the grid with nodal fields
+  int vtk_every = 1;     // write ParaView files every n converged steps (0 = never)
+  bool vtk_grid = true;  // also write the grid with nodal fields
   std::vector<History> histories;
   std::vector<Plot> plots;
 };
@@ -167,8 +167,8 @@ struct Numerics {
 };
 
 struct Model {
-  std::string file;      // the model file, as given
-  std::string directory; // its directory, for relative paths
+  std::string file;       // the model file, as given
+  std::string directory;  // its directory, for relative paths
   std::string title;
   Kinematics kinematics = Kinematics::PlaneStrain;
   Mesh mesh;

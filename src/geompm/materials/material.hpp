@@ -40,6 +40,19 @@ class Material {
   /// Stored energy per unit reference volume at elastic strain eps (for energy histories).
   virtual double strain_energy(const Mat3& elastic_strain) const = 0;
   virtual const char* model_name() const = 0;
+
+  /// Called by the engine once for each point when it is seeded (after MaterialPoints::add,
+  /// before the first update), so that a material whose properties vary in space can store the
+  /// point's own values in its internal variables (Tresca: s_u increasing with depth). The
+  /// vertical coordinate is position(dimension - 1): y in 2D (plane strain, axisymmetry), z in 3D.
+  /// The values then travel with the soil. May throw ParameterError (naming the parameter) when
+  /// the point's values are out of range. Default: nothing to store.
+  virtual void initialise_point(const Vec3& /*position*/, int /*dimension*/,
+                                InternalVariables& /*internal*/) const {}
+  /// How many internal variables the material uses: entries [0, count) of InternalVariables.
+  virtual int internal_variable_count() const { return 0; }
+  /// Name of internal variable k < internal_variable_count() for output ("su", ...).
+  virtual const char* internal_variable_name(int /*k*/) const { return ""; }
 };
 
 using ParameterMap = std::map<std::string, double>;

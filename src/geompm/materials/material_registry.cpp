@@ -7,7 +7,9 @@
 #include "geompm/core/error.hpp"
 #include "geompm/materials/linear_elastic.hpp"
 #include "geompm/materials/material.hpp"
+#include "geompm/materials/mohr_coulomb.hpp"
 #include "geompm/materials/neo_hookean.hpp"
+#include "geompm/materials/tresca.hpp"
 
 namespace geompm {
 
@@ -20,6 +22,8 @@ const std::vector<std::pair<std::string, Creator>>& registry() {
       {"linear_elastic", &LinearElastic::create},
       {"hencky", &LinearElastic::create},
       {"neo_hookean", &NeoHookean::create},
+      {"tresca", &Tresca::create},
+      {"mohr_coulomb", &MohrCoulomb::create},
   };
   return entries;
 }

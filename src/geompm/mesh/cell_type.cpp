@@ -2,9 +2,7 @@
 
 namespace geompm {
 
-int cell_dimension(CellType t) {
-  return (t == CellType::Tet4 || t == CellType::Hex8) ? 3 : 2;
-}
+int cell_dimension(CellType t) { return (t == CellType::Tet4 || t == CellType::Hex8) ? 3 : 2; }
 
 int nodes_per_cell(CellType t) {
   switch (t) {
@@ -39,8 +37,8 @@ const char* to_string(CellType t) {
 }
 
 std::optional<CellType> parse_cell_type(const std::string& name) {
-  for (CellType t : {CellType::Tri3, CellType::Tri6, CellType::Quad4, CellType::Tet4,
-                     CellType::Hex8})
+  for (CellType t :
+       {CellType::Tri3, CellType::Tri6, CellType::Quad4, CellType::Tet4, CellType::Hex8})
     if (name == to_string(t)) return t;
   return std::nullopt;
 }

@@ -17,22 +17,22 @@ namespace geompm {
 template <CellType T>
 struct Element;
 
-#define GEOMPM_ELEMENT_COMMON(DIM, NODES)                                                  \
-  static constexpr int dim = DIM;                                                          \
-  static constexpr int nodes = NODES;                                                      \
-  using Local = Eigen::Matrix<double, DIM, 1>;                                             \
-  using Values = Eigen::Matrix<double, NODES, 1>;                                          \
-  using Gradients = Eigen::Matrix<double, NODES, DIM>; /* row a = dN_a/dxi */              \
-  static Values shape(const Local& xi);                                                    \
-  static Gradients shape_gradients(const Local& xi);                                       \
-  /* true if xi lies in the reference cell, within tol (in reference units) */             \
-  static bool contains(const Local& xi, double tol);                                       \
-  static Local centroid();                                                                  \
-  /* reference coordinates of node a, for tests and for seeding */                         \
-  static Local node(int a);                                                                 \
+#define GEOMPM_ELEMENT_COMMON(DIM, NODES)                                                        \
+  static constexpr int dim = DIM;                                                                \
+  static constexpr int nodes = NODES;                                                            \
+  using Local = Eigen::Matrix<double, DIM, 1>;                                                   \
+  using Values = Eigen::Matrix<double, NODES, 1>;                                                \
+  using Gradients = Eigen::Matrix<double, NODES, DIM>; /* row a = dN_a/dxi */                    \
+  static Values shape(const Local& xi);                                                          \
+  static Gradients shape_gradients(const Local& xi);                                             \
+  /* true if xi lies in the reference cell, within tol (in reference units) */                   \
+  static bool contains(const Local& xi, double tol);                                             \
+  static Local centroid();                                                                       \
+  /* reference coordinates of node a, for tests and for seeding */                               \
+  static Local node(int a);                                                                      \
   /* Gauss rule exact for the mass matrix of this cell (used in empty cells): points, weights */ \
-  static int quadrature_size();                                                             \
-  static Local quadrature_point(int q);                                                     \
+  static int quadrature_size();                                                                  \
+  static Local quadrature_point(int q);                                                          \
   static double quadrature_weight(int q);
 
 template <>

@@ -6,8 +6,8 @@
 namespace geompm {
 
 bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& F_n,
-                          const Mat3& be_n, const InternalVariables& internal_n,
-                          bool want_tangent, FiniteStrainState& out) {
+                          const Mat3& be_n, const InternalVariables& internal_n, bool want_tangent,
+                          FiniteStrainState& out) {
   const double dJ = dF.determinant();
   if (!(dJ > 0.0) || !std::isfinite(dJ)) return false;
 
@@ -26,9 +26,8 @@ bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& 
   out.cauchy_stress = update.kirchhoff / out.jacobian;
   out.internal = update.internal;
   // An elastic update keeps the trial strain: b_e is the trial one, no second decomposition.
-  out.elastic_left_cauchy_green = update.elastic_strain == trial_strain
-                                      ? be_trial
-                                      : symmetric_exp(2.0 * update.elastic_strain);
+  out.elastic_left_cauchy_green =
+      update.elastic_strain == trial_strain ? be_trial : symmetric_exp(2.0 * update.elastic_strain);
 
   if (want_tangent) {
     const Tensor4 L = isotropic_function_derivative(e, log_fn, [](double x) { return 1.0 / x; });

@@ -17,17 +17,17 @@
 namespace geompm {
 
 struct FiniteStrainState {
-  Mat3 deformation_gradient;      // F = dF F_n
-  Mat3 elastic_left_cauchy_green; // b_e after the return mapping
-  Mat3 cauchy_stress;             // sigma = tau / J
+  Mat3 deformation_gradient;       // F = dF F_n
+  Mat3 elastic_left_cauchy_green;  // b_e after the return mapping
+  Mat3 cauchy_stress;              // sigma = tau / J
   InternalVariables internal{};
-  double jacobian = 1.0;          // J = det F
-  Tensor4 spatial_tangent;        // a above (only when requested)
+  double jacobian = 1.0;    // J = det F
+  Tensor4 spatial_tangent;  // a above (only when requested)
 };
 
 /// Updates one point. Returns false if dF is not invertible with det > 0 (the step is cut back).
 bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& F_n,
-                          const Mat3& be_n, const InternalVariables& internal_n,
-                          bool want_tangent, FiniteStrainState& out);
+                          const Mat3& be_n, const InternalVariables& internal_n, bool want_tangent,
+                          FiniteStrainState& out);
 
 }  // namespace geompm

@@ -39,8 +39,7 @@ double cell_bubble(CellType type, const Vec3& xi) {
 }  // namespace
 
 GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
-                       const std::vector<const Material*>& materials,
-                       const GridSettings& settings)
+                       const std::vector<const Material*>& materials, const GridSettings& settings)
     : mesh_(mesh),
       topology_(topology),
       materials_(materials),
@@ -130,8 +129,8 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
       Eigen::Map<typename E::Values>(shape_.data() + std::size_t(p) * nen) = s.N;
-      Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() +
-                                                  std::size_t(p) * nen * dim) = s.dN_dX;
+      Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() + std::size_t(p) * nen * dim) =
+          s.dN_dX;
       occupied += points.volume[p];
     }
     cell_fill_[ci] = std::min(1.0, occupied / cell_measure(mesh_, c, radial));
@@ -207,8 +206,8 @@ void GridSystem::empty_cell_stiffness_typed() {
   empty_stiffness_.assign(std::size_t(n_active) * n * n, 0.0);
   if (settings_.empty_cell_modulus <= 0.0) return;
   const double E_empty = settings_.empty_cell_modulus, nu = 0.3;
-  const Tensor4 C = isotropic_elasticity4(E_empty * nu / ((1 + nu) * (1 - 2 * nu)),
-                                          E_empty / (2 * (1 + nu)));
+  const Tensor4 C =
+      isotropic_elasticity4(E_empty * nu / ((1 + nu) * (1 - 2 * nu)), E_empty / (2 * (1 + nu)));
   Eigen::Matrix<double, nc, nc> A;
   for (int c = 0; c < nc; ++c)
     for (int d = 0; d < nc; ++d)
@@ -230,7 +229,8 @@ void GridSystem::empty_cell_stiffness_typed() {
       Eigen::Matrix<double, nc, n> B = Eigen::Matrix<double, nc, n>::Zero();
       for (int a = 0; a < nen; ++a)
         for (int c = 0; c < nc; ++c)
-          if (GC::row[c] < dim && GC::col[c] < dim) B(c, a * dim + GC::row[c]) = s.dN_dX(a, GC::col[c]);
+          if (GC::row[c] < dim && GC::col[c] < dim)
+            B(c, a * dim + GC::row[c]) = s.dN_dX(a, GC::col[c]);
       if (axisymmetric)
         for (int a = 0; a < nen; ++a) B(nc - 1, a * dim) = s.N(a) / r;
       K.noalias() += weight * dv * (B.transpose() * A * B);
@@ -376,8 +376,8 @@ void GridSystem::add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& 
 }
 
 template <class E>
-bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector& du,
-                                      Vector& f_int, SparseMatrix* tangent) {
+bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                                      SparseMatrix* tangent) {
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
   f_int = Vector::Zero(num_dofs());
   if (tangent) {
@@ -399,8 +399,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         for (int i = 0; i < dim; ++i)
           du_flat(a * dim + i) = du_local(a, i) = du(node_to_active_[nodes[a]] * dim + i);
 
-      const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(
-          empty_stiffness_.data() + std::size_t(ci) * n * n);
+      const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(empty_stiffness_.data() +
+                                                                  std::size_t(ci) * n * n);
       Eigen::Matrix<double, n, 1> f_cell = K_empty * du_flat;
       Eigen::Matrix<double, n, n> K_cell = K_empty;
 
@@ -409,8 +409,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       const Index point_end = settings_.dual_domain ? cell_point_begin_[ci] : cell_point_end_[ci];
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
-        s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(
-            gradients_.data() + std::size_t(p) * nen * dim);
+        s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
+                                                                    std::size_t(p) * nen * dim);
         const PointStartState start{materials_[points.material[p]],
                                     points.position[p],
                                     points.volume[p],
@@ -432,7 +432,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         trial_.volume[p] = r.volume;
       }
       for (int a = 0; a < nen; ++a)
-        for (int i = 0; i < dim; ++i) f_int(node_to_active_[nodes[a]] * dim + i) += f_cell(a * dim + i);
+        for (int i = 0; i < dim; ++i)
+          f_int(node_to_active_[nodes[a]] * dim + i) += f_cell(a * dim + i);
       if (tangent) {
         const int* map = scatter_.data() + std::size_t(ci) * n * n;
         double* values = tangent->valuePtr();
@@ -473,7 +474,7 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     const auto nodes = mesh_.cell_nodes(points.cell[q]);
     const double* N = shape_.data() + std::size_t(q) * nen;
     const Eigen::Map<const Eigen::Matrix<double, nen, dim>> dN(gradients_.data() +
-                                                              std::size_t(q) * nen * dim);
+                                                               std::size_t(q) * nen * dim);
     for (int a = 0; a < nen; ++a) {
       const Index j = node_to_active_[nodes[a]];
       const double w = points.volume[q] * N[a];
@@ -482,8 +483,10 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
       for (int b = 0; b < nen; ++b) {
         const Index i = node_to_active_[nodes[b]];
         auto it = std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == i; });
-        if (it == row.end()) row.emplace_back(i, w * dN.row(b).transpose());
-        else it->second += w * dN.row(b).transpose();
+        if (it == row.end())
+          row.emplace_back(i, w * dN.row(b).transpose());
+        else
+          it->second += w * dN.row(b).transpose();
       }
     }
   }
@@ -497,13 +500,16 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     const auto nodes = mesh_.cell_nodes(points.cell[p]);
     const double* N = shape_.data() + std::size_t(p) * nen;
     const Eigen::Map<const Eigen::Matrix<double, nen, dim>> dN(gradients_.data() +
-                                                              std::size_t(p) * nen * dim);
+                                                               std::size_t(p) * nen * dim);
     entries.clear();
     const double alpha = std::clamp(cell_bubble(mesh_.cell_type, points.local[p]), 0.0, 1.0);
     auto add = [&](Index i, const Gradient& g) {
-      auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.first == i; });
-      if (it == entries.end()) entries.emplace_back(i, g);
-      else it->second += g;
+      auto it =
+          std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.first == i; });
+      if (it == entries.end())
+        entries.emplace_back(i, g);
+      else
+        it->second += g;
     };
     for (int a = 0; a < nen; ++a) {
       const Index j = node_to_active_[nodes[a]];
@@ -516,7 +522,8 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
       }
     }
     for (int b = 0; b < nen; ++b) add(node_to_active_[nodes[b]], alpha * dN.row(b).transpose());
-    std::sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::sort(entries.begin(), entries.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [i, g] : entries) {
       stencil_nodes_.push_back(i);
       double value = 0.0;
@@ -548,9 +555,12 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
     du_local.resize(ns, Dim);
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil_nodes_[begin + a] * Dim + i);
-    const PointStartState start{materials_[points.material[p]], points.position[p],
-                                points.volume[p], points.deformation_gradient[p],
-                                points.elastic_left_cauchy_green[p], points.internal[p]};
+    const PointStartState start{materials_[points.material[p]],
+                                points.position[p],
+                                points.volume[p],
+                                points.deformation_gradient[p],
+                                points.elastic_left_cauchy_green[p],
+                                points.internal[p]};
     if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
     if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
       add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
@@ -560,7 +570,8 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
     trial_.internal[p] = r.state.internal;
     trial_.volume[p] = r.volume;
     for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i) f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
+      for (int i = 0; i < Dim; ++i)
+        f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
     if (!tangent) continue;
     double* values = tangent->valuePtr();
     for (Index a = 0; a < ns; ++a)

@@ -9,13 +9,13 @@
 // independent of the thread count.
 #pragma once
 
-#include <cstdint>
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
+#include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
-#include "geompm/materials/material.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
 

@@ -68,8 +68,8 @@ using PointKernelResult = KernelResult<E::nodes, E::dim>;
 /// point's deformation is inadmissible (det dF <= 0): Newton then cuts the step back.
 template <int NS, int Dim>
 bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
-                     const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric,
-                     bool want_tangent, KernelResult<NS, Dim>& out) {
+                     const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
+                     KernelResult<NS, Dim>& out) {
   constexpr int dim = Dim;
   using GC = GradientComponents<dim>;
   constexpr int nc = GC::count;

@@ -69,8 +69,7 @@ void MaterialPoints::remove(const std::vector<char>& flag) {
 void MaterialPoints::sort_by_cell() {
   std::vector<Index> order(cell.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](Index a, Index b) { return cell[a] < cell[b]; });
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return cell[a] < cell[b]; });
   bool sorted = true;
   for (std::size_t i = 0; i < order.size(); ++i) sorted = sorted && order[i] == Index(i);
   if (sorted) return;

@@ -17,31 +17,31 @@ inline constexpr int max_internal_variables = 4;
 using InternalVariables = std::array<double, max_internal_variables>;
 
 struct MaterialPoints {
-  std::vector<Index> id;              // stable id, reported when a point leaves the mesh
-  std::vector<Index> body;            // index into the model's bodies
-  std::vector<Index> material;        // index into the model's materials
-  std::vector<std::uint64_t> sets;    // bit k set: the point belongs to point set k
+  std::vector<Index> id;            // stable id, reported when a point leaves the mesh
+  std::vector<Index> body;          // index into the model's bodies
+  std::vector<Index> material;      // index into the model's materials
+  std::vector<std::uint64_t> sets;  // bit k set: the point belongs to point set k
   std::vector<Vec3> position;
   std::vector<Vec3> initial_position;
-  std::vector<Vec3> displacement;     // total, since the point was seeded
+  std::vector<Vec3> displacement;        // total, since the point was seeded
   std::vector<Vec3> phase_displacement;  // since the start of the current analysis phase
   std::vector<Vec3> velocity;
   std::vector<Vec3> acceleration;
   std::vector<double> mass;
-  std::vector<double> volume;          // current; per radian in axisymmetry
+  std::vector<double> volume;  // current; per radian in axisymmetry
   std::vector<double> initial_volume;
-  std::vector<Mat3> stress;            // Cauchy, tension positive
-  std::vector<Mat3> deformation_gradient;   // total F
+  std::vector<Mat3> stress;                     // Cauchy, tension positive
+  std::vector<Mat3> deformation_gradient;       // total F
   std::vector<Mat3> elastic_left_cauchy_green;  // b_e = F_e F_e^T
   std::vector<InternalVariables> internal;
-  std::vector<Index> cell;             // cell containing the point
-  std::vector<Vec3> local;             // reference coordinates in that cell
+  std::vector<Index> cell;  // cell containing the point
+  std::vector<Vec3> local;  // reference coordinates in that cell
 
   Index size() const { return static_cast<Index>(id.size()); }
 
   /// Appends one point with zero velocity, zero stress and F = b_e = I.
-  Index add(Index body_index, Index material_index, const Vec3& x, double volume,
-            double density, Index cell, const Vec3& xi);
+  Index add(Index body_index, Index material_index, const Vec3& x, double volume, double density,
+            Index cell, const Vec3& xi);
 
   /// Removes the points whose flag is set, keeping the order of the rest.
   void remove(const std::vector<char>& flag);

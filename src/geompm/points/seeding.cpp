@@ -24,8 +24,8 @@ std::vector<Simplex2> split_triangle(int k) {
       const Eigen::Vector2d o(i * h, j * h);
       out.push_back({o, o + Eigen::Vector2d(h, 0), o + Eigen::Vector2d(0, h)});
       if (i + j < k - 1)
-        out.push_back({o + Eigen::Vector2d(h, 0), o + Eigen::Vector2d(h, h),
-                       o + Eigen::Vector2d(0, h)});
+        out.push_back(
+            {o + Eigen::Vector2d(h, 0), o + Eigen::Vector2d(h, h), o + Eigen::Vector2d(0, h)});
     }
   return out;
 }
@@ -52,9 +52,8 @@ std::vector<Simplex3> split_tetrahedron(int count) {
   // Mid-edge (Freudenthal) split: four corner tetrahedra and the inner octahedron in four.
   const Eigen::Vector3d m01 = (v0 + v1) / 2, m02 = (v0 + v2) / 2, m03 = (v0 + v3) / 2,
                         m12 = (v1 + v2) / 2, m13 = (v1 + v3) / 2, m23 = (v2 + v3) / 2;
-  return {{v0, m01, m02, m03}, {m01, v1, m12, m13}, {m02, m12, v2, m23},
-          {m03, m13, m23, v3}, {m01, m02, m03, m13}, {m01, m02, m13, m12},
-          {m02, m03, m13, m23}, {m02, m12, m13, m23}};
+  return {{v0, m01, m02, m03},  {m01, v1, m12, m13},  {m02, m12, v2, m23},  {m03, m13, m23, v3},
+          {m01, m02, m03, m13}, {m01, m02, m13, m12}, {m02, m03, m13, m23}, {m02, m12, m13, m23}};
 }
 
 int integer_root(int n, int power) {
@@ -76,8 +75,8 @@ Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index
 
 // |dX/dxi| (times the radius in axisymmetry) at xi: the volume density in reference space.
 template <class E>
-double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X,
-                      const typename E::Local& xi, bool axisymmetric) {
+double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typename E::Local& xi,
+                      bool axisymmetric) {
   const Eigen::Matrix<double, E::dim, E::dim> J = X.transpose() * E::shape_gradients(xi);
   double d = std::abs(J.determinant());
   if (axisymmetric) d *= E::shape(xi).dot(X.col(0));
@@ -85,8 +84,8 @@ double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X,
 }
 
 template <class E>
-SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X,
-                     const typename E::Local& xi, double volume) {
+SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typename E::Local& xi,
+                     double volume) {
   SeedPoint p;
   p.xi = Vec3::Zero();
   p.xi.head<E::dim>() = xi;
@@ -97,8 +96,8 @@ SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X,
 }
 
 template <class E>
-std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X,
-                                        int k, bool axisymmetric) {
+std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X, int k,
+                                        bool axisymmetric) {
   // Sub-cells of [-1,1]^dim, each integrated with a 3-point Gauss rule per direction (exact
   // for the bilinear/trilinear Jacobian times the radius).
   constexpr int dim = E::dim;
@@ -129,8 +128,8 @@ std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E:
 }
 
 template <class E>
-std::vector<SeedPoint> seed_triangle(const Eigen::Matrix<double, E::nodes, E::dim>& X,
-                                     int count, bool axisymmetric) {
+std::vector<SeedPoint> seed_triangle(const Eigen::Matrix<double, E::nodes, E::dim>& X, int count,
+                                     bool axisymmetric) {
   std::vector<Simplex2> parts;
   if (integer_root(count, 2) > 0) {
     parts = split_triangle(integer_root(count, 2));
@@ -167,8 +166,7 @@ std::vector<SeedPoint> seed_tetrahedron(const Eigen::Matrix<double, E::nodes, E:
     const double reference_volume = std::abs(edges.determinant()) / 6.0;
     const Eigen::Vector3d centre = (t[0] + t[1] + t[2] + t[3]) / 4.0;
     // The Tet4 map is affine: the density is constant.
-    out.push_back(make_point<E>(X, centre,
-                                reference_volume * volume_density<E>(X, centre, false)));
+    out.push_back(make_point<E>(X, centre, reference_volume * volume_density<E>(X, centre, false)));
   }
   return out;
 }
@@ -192,8 +190,7 @@ std::vector<int> allowed_points_per_cell(CellType type) {
 
 std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axisymmetric) {
   const auto allowed = allowed_points_per_cell(mesh.cell_type);
-  if (std::find(allowed.begin(), allowed.end(), count) == allowed.end())
-  {
+  if (std::find(allowed.begin(), allowed.end(), count) == allowed.end()) {
     std::string list;
     for (int n : allowed) list += (list.empty() ? "" : ", ") + std::to_string(n);
     throw std::invalid_argument(std::to_string(count) + " points per cell is not available for " +

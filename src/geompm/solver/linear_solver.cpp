@@ -38,10 +38,9 @@ std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name) {
   if (name == "umfpack")
     return std::make_unique<EigenSolver<Eigen::UmfPackLU<SparseMatrix>>>("umfpack");
   if (name == "sparse_lu")
-    return std::make_unique<
-        EigenSolver<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>>("sparse_lu");
-  throw std::invalid_argument("unknown linear solver '" + name +
-                              "'; known: umfpack, sparse_lu");
+    return std::make_unique<EigenSolver<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>>(
+        "sparse_lu");
+  throw std::invalid_argument("unknown linear solver '" + name + "'; known: umfpack, sparse_lu");
 }
 
 }  // namespace geompm

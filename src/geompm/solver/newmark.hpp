@@ -1,6 +1,7 @@
 // Newmark time integration of the grid equations (seed paper eqs. 8 and 11, which are the
 // trapezoidal case beta = 1/4, gamma = 1/2): with the displacement increment du of the step,
-//   a1 = (du - dt v0 - dt^2 (1/2 - beta) a0) / (beta dt^2),   v1 = v0 + dt ((1 - gamma) a0 + gamma a1),
+//   a1 = (du - dt v0 - dt^2 (1/2 - beta) a0) / (beta dt^2),   v1 = v0 + dt ((1 - gamma) a0 + gamma
+//   a1),
 // and the inertia term of the tangent is M / (beta dt^2). beta = 1/2 (the seed's damped choice,
 // §3.8) with gamma = 1/2 is stable and damps the highest frequencies.
 #pragma once

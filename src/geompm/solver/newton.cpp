@@ -31,13 +31,14 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       result.converged = true;
       return result;
     }
-    if (k > 0 && relative > settings.divergence_factor * std::max(result.residuals.front(), 1e-12)) {
+    if (k > 0 &&
+        relative > settings.divergence_factor * std::max(result.residuals.front(), 1e-12)) {
       result.failure = fmt::format("diverged (relative residual {:.3e})", relative);
       return result;
     }
     if (k == settings.max_iterations) {
-      result.failure = fmt::format("no convergence in {} iterations (relative residual {:.3e})",
-                                   k, relative);
+      result.failure =
+          fmt::format("no convergence in {} iterations (relative residual {:.3e})", k, relative);
       return result;
     }
     try {

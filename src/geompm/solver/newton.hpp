@@ -27,15 +27,16 @@ struct NewtonSettings {
   int max_iterations = 15;
   double residual_tolerance = 1e-8;
   double displacement_tolerance = 1e-8;
-  double divergence_factor = 1e8;  // residual growth over the first residual that counts as divergence
+  double divergence_factor =
+      1e8;  // residual growth over the first residual that counts as divergence
 };
 
 struct NewtonResult {
   bool converged = false;
-  int iterations = 0;                   // linear solves
-  std::vector<double> residuals;        // relative residual before each solve, and the last
-  std::vector<double> corrections;      // relative size of each correction
-  std::string failure;                  // why it did not converge
+  int iterations = 0;               // linear solves
+  std::vector<double> residuals;    // relative residual before each solve, and the last
+  std::vector<double> corrections;  // relative size of each correction
+  std::string failure;              // why it did not converge
 };
 
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,

@@ -40,14 +40,18 @@ void check_assembled_tangent(const std::string& example, bool dual_domain) {
     ASSERT_TRUE(grid.internal_force(model->points, plus, fp, nullptr));
     ASSERT_TRUE(grid.internal_force(model->points, minus, fm, nullptr));
     const Vector column = (fp - fm) / (2 * h);
-    worst = std::max(worst, (dense.col(grid.free_index()[j]) - column).norm() /
-                                std::max(column.norm(), 1e-12));
+    worst = std::max(
+        worst, (dense.col(grid.free_index()[j]) - column).norm() / std::max(column.norm(), 1e-12));
   }
   EXPECT_LT(worst, 1e-5) << example << (dual_domain ? " (DDMP)" : " (standard)");
 }
 
-TEST(GridSystemTangent, StandardPlaneStrain) { check_assembled_tangent("oedometer/oedometer.yaml", false); }
-TEST(GridSystemTangent, DualDomainPlaneStrain) { check_assembled_tangent("oedometer/oedometer.yaml", true); }
+TEST(GridSystemTangent, StandardPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", false);
+}
+TEST(GridSystemTangent, DualDomainPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", true);
+}
 TEST(GridSystemTangent, DualDomainAxisymmetric) {
   check_assembled_tangent("column/column_axisymmetric.yaml", true);
 }

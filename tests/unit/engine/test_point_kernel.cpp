@@ -74,7 +74,9 @@ void check_tangent(const Material& material, bool prestressed, bool axisymmetric
     const double scale = fd.norm();
     ASSERT_GT(scale, 0.0);
     EXPECT_LT((r.stiffness - fd).norm() / scale, 1e-7)
-        << E::nodes << "-node cell, trial " << trial << "\nK=\n" << r.stiffness << "\nFD=\n" << fd;
+        << E::nodes << "-node cell, trial " << trial << "\nK=\n"
+        << r.stiffness << "\nFD=\n"
+        << fd;
   }
 }
 
@@ -113,12 +115,14 @@ TEST(PointKernel, RigidRotationRotatesTheStress) {
   Eigen::Matrix2d R;
   R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
   Eigen::Matrix<double, 4, 2> du;
-  for (int a = 0; a < 4; ++a) du.row(a) = (R * X.row(a).transpose() - X.row(a).transpose()).transpose();
+  for (int a = 0; a < 4; ++a)
+    du.row(a) = (R * X.row(a).transpose() - X.row(a).transpose()).transpose();
   const auto s = make_stencil<E>(X, E::Local(0.1, -0.2));
   PointKernelResult<E> rotated, unrotated;
   ASSERT_TRUE(integrate_point(s, start, du, false, false, rotated));
-  ASSERT_TRUE(integrate_point(s, start, Eigen::Matrix<double, 4, 2>(Eigen::Matrix<double, 4, 2>::Zero()), false, false,
-                                 unrotated));
+  ASSERT_TRUE(integrate_point(s, start,
+                              Eigen::Matrix<double, 4, 2>(Eigen::Matrix<double, 4, 2>::Zero()),
+                              false, false, unrotated));
   Mat3 R3 = Mat3::Identity();
   R3.topLeftCorner<2, 2>() = R;
   const Mat3 expected = R3 * unrotated.state.cauchy_stress * R3.transpose();

@@ -1,0 +1,67 @@
+// The return mapping in principal stress space shared by the elastic-perfectly plastic soil
+// models whose yield surface is made of planes (Tresca, Mohr-Coulomb, tension cut-off).
+//
+// For an isotropic material the Kirchhoff stress, the elastic strain and the plastic flow share
+// the principal axes of the trial strain (de Souza Neto, Peric & Owen 2008, "dSPO", §8.1), so the
+// return is solved on three principal values sorted tau_1 >= tau_2 >= tau_3 (tension positive).
+// With planar yield functions, a constant elasticity and no hardening, the return to any face of
+// the surface (a plane, an edge where two planes meet, a vertex where three meet) is the solution
+// of a small linear system, and so is its tangent: the mapping is exact, with no iteration
+// (docs/materials.md eqs. M.1-M.7). Which face is the right one is decided by the Kuhn-Tucker
+// conditions (eq. M.5), trying the faces a model lists, in its order.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "geompm/core/tensor.hpp"
+#include "geompm/materials/material.hpp"
+
+namespace geompm {
+
+/// One plane of a yield surface in principal stress space, f(tau) = normal . tau - limit <= 0,
+/// and the direction of the plastic strain it produces, d eps_p = d gamma * flow (eq. M.2-M.3).
+struct YieldPlane {
+  Vec3 normal;
+  Vec3 flow;
+  double limit = 0;
+};
+
+/// The result of a principal return: stresses and tangent in the order of the trial strains.
+struct PrincipalReturn {
+  Vec3 stress = Vec3::Zero();          // tau_a
+  Vec3 plastic_strain = Vec3::Zero();  // increment of the principal plastic strains
+  Mat3 tangent = Mat3::Zero();         // C_ab = d tau_a / d eps_trial_b
+  unsigned active = 0;                 // bit k set: plane k is active; 0: elastic
+};
+
+/// The principal values of a symmetric matrix in descending order (tau_1 >= tau_2 >= tau_3 for
+/// a stress), with the eigenvectors as the columns in the same order.
+SymmetricEigen principal_descending(const Mat3& a);
+
+/// Isotropic elasticity on principal values: tau_a = lambda sum_b eps_b + 2 mu eps_a (eq. M.1).
+Mat3 principal_elasticity(double lambda, double mu);
+
+/// Every set of one, two or three of `plane_count` planes, as bit masks, smallest sets first
+/// (planes before edges before vertices), in plane order within a size.
+std::vector<unsigned> active_sets_up_to_three(int plane_count);
+
+/// The return to the yield planes of principal trial strains sorted eps_1 >= eps_2 >= eps_3.
+/// Elastic when no plane is violated; otherwise the first set of `candidates` whose return
+/// satisfies the Kuhn-Tucker conditions (eq. M.5) is taken. Should none do (it does not happen for
+/// the surfaces of this room, but a tolerance is involved) the candidate that violates them least
+/// is taken, so the update always returns.
+PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& elasticity,
+                                       std::span<const YieldPlane> planes,
+                                       std::span<const unsigned> candidates);
+
+/// The equivalent plastic strain of a principal plastic strain increment, sqrt(2/3 de_p : de_p)
+/// (eq. M.8): the von Mises measure, which for an isochoric (Tresca) flow is the usual one.
+double equivalent_plastic_strain(const Vec3& plastic_strain_increment);
+
+/// Writes the Kirchhoff stress, the elastic strain and the tangent D = d tau / d eps_trial
+/// (eq. M.7) of a plastic return into `out` (not the internal variables).
+void assemble_principal_update(const SymmetricEigen& trial, const PrincipalReturn& r,
+                               StressUpdate& out);
+
+}  // namespace geompm
