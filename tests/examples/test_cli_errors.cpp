@@ -8,100 +8,25 @@
 // of the square [0, 2] x [0, 1] with the cell group "soil" and the boundaries "bottom", "left"
 // and "top" (no "right").
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
-#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
+using namespace geompm::testing;
+
 // ---------------------------------------------------------------------------------------------
-// Running the geompm executable.
-
-struct CommandResult {
-  bool exited = false;  // ended by exit() (not by a signal)
-  int exit_code = -1;   // WEXITSTATUS when exited
-  int signal = 0;       // WTERMSIG when killed by a signal
-  std::string out, err;
-};
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'')
-      q += "'\\''";
-    else
-      q.push_back(c);
-  }
-  q.push_back('\'');
-  return q;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Runs geompm with `args` in the directory `cwd`; stdout and stderr are captured into files of
-/// `capture` (outside `cwd`, so that they never look like output of the run).
-CommandResult run_geompm(const std::vector<std::string>& args, const fs::path& cwd,
-                         const fs::path& capture) {
-  const fs::path out = capture / "stdout.txt", err = capture / "stderr.txt";
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
-  std::string command = "cd ";
-  for (const std::string& piece :
-       {shell_quote(cwd.string()), std::string(" && exec "), shell_quote(GEOMPM_BINARY)})
-    command += piece;
-  for (const auto& a : args) {
-    command += ' ';
-    command += shell_quote(a);
-  }
-  command += " </dev/null >";
-  command += shell_quote(out.string());
-  command += " 2>";
-  command += shell_quote(err.string());
-  const int status = std::system(command.c_str());
-  CommandResult r;
-  if (status != -1 && WIFEXITED(status)) {
-    r.exited = true;
-    r.exit_code = WEXITSTATUS(status);
-  } else if (status != -1 && WIFSIGNALED(status)) {
-    r.signal = WTERMSIG(status);
-  }
-  r.out = read_text(out);
-  r.err = read_text(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-std::string describe(const CommandResult& r) {
-  std::ostringstream s;
-  if (r.exited)
-    s << "exit code " << r.exit_code;
-  else
-    s << "killed by signal " << r.signal;
-  s << "\n--- stdout ---\n" << r.out << "\n--- stderr ---\n" << r.err;
-  return s.str();
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << part << "' not found in:\n" << text;
-}
+// Where the model reader says a problem is.
 
 /// 1-based line of the first occurrence of `marker` in `text` (0 if absent, which fails).
 int line_of(const std::string& text, const std::string& marker) {
@@ -232,47 +157,8 @@ std::string model_text(const ModelParts& p) {
          p.fixities + p.output;
 }
 
-class CliErrors : public ::testing::Test {
+class CliErrors : public GeompmRunTest<> {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
-    for (char& c : name)
-      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    root_ = fs::temp_directory_path() /
-            ("geompm_e2e_" + name + "_" + std::to_string(static_cast<long>(getpid())));
-    fs::remove_all(root_);
-    fs::create_directories(work());
-    fs::create_directories(root_ / "capture");
-  }
-  void TearDown() override {
-    if (HasFailure())
-      std::cerr << "[ kept     ] " << root_ << "\n";
-    else
-      fs::remove_all(root_);
-  }
-
-  fs::path work() const { return root_ / "work"; }
-
-  void write(const std::string& name, const std::string& text) {
-    std::ofstream(work() / name, std::ios::binary) << text;
-    written_.insert(name);
-  }
-
-  CommandResult geompm(const std::vector<std::string>& args) const {
-    return run_geompm(args, work(), root_ / "capture");
-  }
-
-  /// The files in the working directory that the test did not write itself.
-  std::set<std::string> unexpected_files() const {
-    std::set<std::string> extra;
-    for (const auto& entry : fs::directory_iterator(work())) {
-      const std::string name = entry.path().filename().string();
-      if (!written_.count(name)) extra.insert(name);
-    }
-    return extra;
-  }
-
   /// `geompm check model.yaml` and `geompm run -q -o out model.yaml` both reject the model as bad
   /// input (exit 2) with the same message, print nothing on stdout and write nothing (no `out`,
   /// no default `model_results`, no file at all). Returns the message.
@@ -290,9 +176,6 @@ class CliErrors : public ::testing::Test {
     for (const auto& name : unexpected_files()) ADD_FAILURE() << "bad input wrote " << name;
     return run.err;
   }
-
-  std::set<std::string> written_;
-  fs::path root_;
 };
 
 // The model the error tests start from is valid: each test fails for its own fault only.

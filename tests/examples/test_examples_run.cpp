@@ -4,165 +4,27 @@
 // The examples are found by globbing examples/*/*.yaml when the test program starts (test
 // discovery runs it before each ctest run), so a new example is covered without editing this file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "geompm/io/model_reader.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// ---------------------------------------------------------------------------------------------
-// Running the geompm executable.
-
-struct CommandResult {
-  bool exited = false;  // ended by exit() (not by a signal)
-  int exit_code = -1;   // WEXITSTATUS when exited
-  int signal = 0;       // WTERMSIG when killed by a signal
-  std::string out, err;
-};
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'')
-      q += "'\\''";
-    else
-      q.push_back(c);
-  }
-  q.push_back('\'');
-  return q;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Runs geompm with `args` in the directory `cwd`; stdout and stderr are captured into files of
-/// `capture` (outside `cwd`, so that they never look like output of the run).
-CommandResult run_geompm(const std::vector<std::string>& args, const fs::path& cwd,
-                         const fs::path& capture) {
-  const fs::path out = capture / "stdout.txt", err = capture / "stderr.txt";
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
-  std::string command = "cd ";
-  for (const std::string& piece :
-       {shell_quote(cwd.string()), std::string(" && exec "), shell_quote(GEOMPM_BINARY)})
-    command += piece;
-  for (const auto& a : args) {
-    command += ' ';
-    command += shell_quote(a);
-  }
-  command += " </dev/null >";
-  command += shell_quote(out.string());
-  command += " 2>";
-  command += shell_quote(err.string());
-  const int status = std::system(command.c_str());
-  CommandResult r;
-  if (status != -1 && WIFEXITED(status)) {
-    r.exited = true;
-    r.exit_code = WEXITSTATUS(status);
-  } else if (status != -1 && WIFSIGNALED(status)) {
-    r.signal = WTERMSIG(status);
-  }
-  r.out = read_text(out);
-  r.err = read_text(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-std::string describe(const CommandResult& r) {
-  std::ostringstream s;
-  if (r.exited)
-    s << "exit code " << r.exit_code;
-  else
-    s << "killed by signal " << r.signal;
-  s << "\n--- stdout ---\n" << r.out << "\n--- stderr ---\n" << r.err;
-  return s.str();
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << part << "' not found in:\n" << text;
-}
+using namespace geompm::testing;
 
 // ---------------------------------------------------------------------------------------------
-// Reading what a run wrote.
-
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::string problem;  // empty when the file parsed
-
-  std::ptrdiff_t column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    return it == header.end() ? -1 : it - header.begin();
-  }
-};
-
-std::vector<std::string> split(const std::string& line, char separator) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, separator)) cells.push_back(cell);
-  if (!line.empty() && line.back() == separator) cells.emplace_back();
-  return cells;
-}
-
-Csv read_csv(const fs::path& file) {
-  Csv csv;
-  std::ifstream in(file);
-  if (!in) {
-    csv.problem = "cannot open " + file.string();
-    return csv;
-  }
-  std::string line;
-  if (!std::getline(in, line)) {
-    csv.problem = "no header line";
-    return csv;
-  }
-  csv.header = split(line, ',');
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto cells = split(line, ',');
-    if (cells.size() != csv.header.size()) {
-      csv.problem = "line " + std::to_string(number) + " has " + std::to_string(cells.size()) +
-                    " values, the header " + std::to_string(csv.header.size());
-      return csv;
-    }
-    std::vector<double> row;
-    for (const auto& cell : cells) {
-      std::size_t used = 0;
-      double value = 0;
-      try {
-        value = std::stod(cell, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != cell.size()) {
-        csv.problem = "line " + std::to_string(number) + ": '" + cell + "' is not a number";
-        return csv;
-      }
-      row.push_back(value);
-    }
-    csv.rows.push_back(std::move(row));
-  }
-  return csv;
-}
+// Reading what a run wrote (history.csv: cli_support.hpp).
 
 /// Checks the 8-byte PNG signature and a non-empty IHDR chunk.
 ::testing::AssertionResult IsPng(const fs::path& file) {
@@ -256,33 +118,7 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
   return name;
 }
 
-class Example : public ::testing::TestWithParam<std::string> {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
-    for (char& c : name)
-      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    root_ = fs::temp_directory_path() /
-            ("geompm_e2e_" + name + "_" + std::to_string(static_cast<long>(getpid())));
-    fs::remove_all(root_);
-    fs::create_directories(root_ / "work");
-    fs::create_directories(root_ / "capture");
-  }
-  void TearDown() override {
-    if (HasFailure())
-      std::cerr << "[ kept     ] " << root_ << "\n";
-    else
-      fs::remove_all(root_);
-  }
-
-  fs::path work() const { return root_ / "work"; }
-  CommandResult geompm(const std::vector<std::string>& args) const {
-    return run_geompm(args, work(), root_ / "capture");
-  }
-
-  fs::path root_;
-};
+class Example : public GeompmRunTest<::testing::TestWithParam<std::string>> {};
 
 TEST(Examples, AreFound) {
   const auto examples = find_examples();

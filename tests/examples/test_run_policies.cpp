@@ -2,167 +2,25 @@
 // steps that do not converge), adaptive time stepping, results independent of the thread count,
 // and the --version / --help texts.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "cli_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// ---------------------------------------------------------------------------------------------
-// Running the geompm executable.
-
-struct CommandResult {
-  bool exited = false;  // ended by exit() (not by a signal)
-  int exit_code = -1;   // WEXITSTATUS when exited
-  int signal = 0;       // WTERMSIG when killed by a signal
-  std::string out, err;
-};
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'')
-      q += "'\\''";
-    else
-      q.push_back(c);
-  }
-  q.push_back('\'');
-  return q;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Runs geompm with `args` in the directory `cwd`; stdout and stderr are captured into files of
-/// `capture` (outside `cwd`, so that they never look like output of the run).
-CommandResult run_geompm(const std::vector<std::string>& args, const fs::path& cwd,
-                         const fs::path& capture) {
-  const fs::path out = capture / "stdout.txt", err = capture / "stderr.txt";
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
-  std::string command = "cd ";
-  for (const std::string& piece :
-       {shell_quote(cwd.string()), std::string(" && exec "), shell_quote(GEOMPM_BINARY)})
-    command += piece;
-  for (const auto& a : args) {
-    command += ' ';
-    command += shell_quote(a);
-  }
-  command += " </dev/null >";
-  command += shell_quote(out.string());
-  command += " 2>";
-  command += shell_quote(err.string());
-  const int status = std::system(command.c_str());
-  CommandResult r;
-  if (status != -1 && WIFEXITED(status)) {
-    r.exited = true;
-    r.exit_code = WEXITSTATUS(status);
-  } else if (status != -1 && WIFSIGNALED(status)) {
-    r.signal = WTERMSIG(status);
-  }
-  r.out = read_text(out);
-  r.err = read_text(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-std::string describe(const CommandResult& r) {
-  std::ostringstream s;
-  if (r.exited)
-    s << "exit code " << r.exit_code;
-  else
-    s << "killed by signal " << r.signal;
-  s << "\n--- stdout ---\n" << r.out << "\n--- stderr ---\n" << r.err;
-  return s.str();
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << part << "' not found in:\n" << text;
-}
+using namespace geompm::testing;
 
 // ---------------------------------------------------------------------------------------------
-// Reading what a run wrote.
-
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::string problem;  // empty when the file parsed
-
-  /// The values of a column (empty, with a test failure, if there is no such column).
-  std::vector<double> column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    std::vector<double> values;
-    if (it == header.end()) {
-      ADD_FAILURE() << "history.csv has no column '" << name << "'";
-      return values;
-    }
-    for (const auto& row : rows) values.push_back(row[it - header.begin()]);
-    return values;
-  }
-};
-
-Csv read_csv(const fs::path& file) {
-  Csv csv;
-  std::ifstream in(file);
-  if (!in) {
-    csv.problem = "cannot open " + file.string();
-    return csv;
-  }
-  auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::string cell;
-    std::istringstream s(line);
-    while (std::getline(s, cell, ',')) cells.push_back(cell);
-    return cells;
-  };
-  std::string line;
-  if (!std::getline(in, line)) {
-    csv.problem = "no header line";
-    return csv;
-  }
-  csv.header = split(line);
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto cells = split(line);
-    if (cells.size() != csv.header.size()) {
-      csv.problem = "line " + std::to_string(number) + " has " + std::to_string(cells.size()) +
-                    " values, the header " + std::to_string(csv.header.size());
-      return csv;
-    }
-    std::vector<double> row;
-    for (const auto& cell : cells) {
-      std::size_t used = 0;
-      double value = 0;
-      try {
-        value = std::stod(cell, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != cell.size()) {
-        csv.problem = "line " + std::to_string(number) + ": '" + cell + "' is not a number";
-        return csv;
-      }
-      row.push_back(value);
-    }
-    csv.rows.push_back(std::move(row));
-  }
-  return csv;
-}
+// Reading what a run wrote (history.csv: cli_support.hpp).
 
 /// The history of a run that wrote every converged step: rows for steps 0, 1, 2, ... in order.
 void expect_consecutive_steps(const Csv& history) {
@@ -252,36 +110,7 @@ std::string replace_once(std::string text, const std::string& from, const std::s
   return text.replace(at, from.size(), to);
 }
 
-class RunPolicies : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
-    for (char& c : name)
-      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    root_ = fs::temp_directory_path() /
-            ("geompm_e2e_" + name + "_" + std::to_string(static_cast<long>(getpid())));
-    fs::remove_all(root_);
-    fs::create_directories(work());
-    fs::create_directories(root_ / "capture");
-  }
-  void TearDown() override {
-    if (HasFailure())
-      std::cerr << "[ kept     ] " << root_ << "\n";
-    else
-      fs::remove_all(root_);
-  }
-
-  fs::path work() const { return root_ / "work"; }
-  void write(const std::string& name, const std::string& text) const {
-    std::ofstream(work() / name, std::ios::binary) << text;
-  }
-  CommandResult geompm(const std::vector<std::string>& args) const {
-    return run_geompm(args, work(), root_ / "capture");
-  }
-
-  fs::path root_;
-};
+class RunPolicies : public GeompmRunTest<> {};
 
 // (a) A point leaves the mesh under the default policy (stop): exit 3, the message names the
 // points and where they would go, and the steps finished before are all kept.

@@ -217,6 +217,16 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                          s.position.y(), s.position.z()));
         const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
                                           density, c, s.xi);
+        // Point-dependent state, e.g. a strength growing with depth.
+        try {
+          model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
+        } catch (const ParameterError& e) {
+          SourceLocation where = spec.materials[material].source;
+          where.key_path += "." + e.key();
+          throw InputError(where, fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')",
+                                              e.what(), s.position.x(), s.position.y(),
+                                              s.position.z(), body.name));
+        }
         for (int d = 0; d < dim; ++d)
           model->points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
       }

@@ -55,9 +55,8 @@ Tensor4 principal_function_derivative4(const SymmetricEigen& eps, const Vec3& ta
     for (int b = 0; b < 3; ++b) {
       if (a == b) continue;
       const double d = x(a) - x(b);
-      spin(a, b) = std::abs(d) <= 1e-8 * scale
-                       ? 0.5 * (c(a, a) - c(a, b) - c(b, a) + c(b, b))
-                       : (tau(a) - tau(b)) / d;
+      spin(a, b) = std::abs(d) <= 1e-8 * scale ? 0.5 * (c(a, a) - c(a, b) - c(b, a) + c(b, b))
+                                               : (tau(a) - tau(b)) / d;
     }
   Tensor4 d = eigen_derivative4(eps.vectors, spin);
   for (int a = 0; a < 3; ++a) {

@@ -20,10 +20,10 @@
 namespace geompm {
 
 struct StressUpdate {
-  Mat3 kirchhoff;            // tau = J sigma
-  Mat3 elastic_strain;       // 1/2 ln(b_e) after the update (= eps_tr when elastic)
+  Mat3 kirchhoff;       // tau = J sigma
+  Mat3 elastic_strain;  // 1/2 ln(b_e) after the update (= eps_tr when elastic)
   InternalVariables internal{};
-  Tensor4 tangent;           // d tau / d eps_tr, index (3i+j, 3k+l)
+  Tensor4 tangent;  // d tau / d eps_tr, index (3i+j, 3k+l)
 };
 
 class Material {

@@ -19,10 +19,8 @@ using Creator = std::function<std::unique_ptr<Material>(const ParameterMap&)>;
 
 const std::vector<std::pair<std::string, Creator>>& registry() {
   static const std::vector<std::pair<std::string, Creator>> entries = {
-      {"linear_elastic", &LinearElastic::create},
-      {"hencky", &LinearElastic::create},
-      {"neo_hookean", &NeoHookean::create},
-      {"tresca", &Tresca::create},
+      {"linear_elastic", &LinearElastic::create}, {"hencky", &LinearElastic::create},
+      {"neo_hookean", &NeoHookean::create},       {"tresca", &Tresca::create},
       {"mohr_coulomb", &MohrCoulomb::create},
   };
   return entries;
@@ -39,8 +37,8 @@ std::vector<std::string> material_models() {
 std::unique_ptr<Material> create_material(const std::string& model, const ParameterMap& p) {
   for (const auto& [name, creator] : registry())
     if (name == model) return creator(p);
-  throw ParameterError("model", fmt::format("unknown material model '{}'; known models: {}",
-                                            model, fmt::join(material_models(), ", ")));
+  throw ParameterError("model", fmt::format("unknown material model '{}'; known models: {}", model,
+                                            fmt::join(material_models(), ", ")));
 }
 
 }  // namespace geompm

@@ -59,17 +59,18 @@ std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
                                             "[0, phi] = [0, {}], got {}",
                                             p.friction_angle, p.dilation_angle));
   if (p.cohesion == 0 && p.friction_angle == 0)
-    throw ParameterError("c", "material model 'mohr_coulomb' has no strength with c = 0 and "
-                              "phi = 0");
+    throw ParameterError("c",
+                         "material model 'mohr_coulomb' has no strength with c = 0 and "
+                         "phi = 0");
   p.youngs_modulus = ParameterReader::positive("E", r.required("E"));
   p.poisson_ratio = ParameterReader::poisson_ratio("nu", r.required("nu"));
   p.density = ParameterReader::non_negative("density", r.optional("density", 0));
 
-  const double apex = p.friction_angle > 0
-                          ? p.cohesion / std::tan(radians(p.friction_angle))
-                          : std::numeric_limits<double>::infinity();
+  const double apex = p.friction_angle > 0 ? p.cohesion / std::tan(radians(p.friction_angle))
+                                           : std::numeric_limits<double>::infinity();
   if (map.count("tension_cutoff")) {
-    p.tension_cutoff = ParameterReader::non_negative("tension_cutoff", r.required("tension_cutoff"));
+    p.tension_cutoff =
+        ParameterReader::non_negative("tension_cutoff", r.required("tension_cutoff"));
     if (p.tension_cutoff > apex * (1 + 1e-12))
       throw ParameterError("tension_cutoff",
                            fmt::format("'tension_cutoff' must not exceed the apex of the "
@@ -92,8 +93,7 @@ double MohrCoulomb::apex() const {
 }
 
 const char* MohrCoulomb::internal_variable_name(int k) const {
-  static constexpr const char* names[] = {"equivalent_plastic_strain",
-                                          "plastic_volumetric_strain"};
+  static constexpr const char* names[] = {"equivalent_plastic_strain", "plastic_volumetric_strain"};
   return k >= 0 && k < 2 ? names[k] : "";
 }
 

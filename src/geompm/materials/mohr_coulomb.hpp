@@ -39,12 +39,12 @@ class MohrCoulomb final : public Material {
 
   // Planes of eq. M.12-M.13 (bit k of PrincipalReturn::active is plane k) and named faces.
   static constexpr unsigned main_plane = 0b000001;
-  static constexpr unsigned right_edge = 0b000011;  // tau_2 = tau_3 (triaxial extension)
-  static constexpr unsigned left_edge = 0b000101;   // tau_1 = tau_2 (triaxial compression)
-  static constexpr unsigned tension_plane = 0b001000;         // tau_1 = t
-  static constexpr unsigned main_tension_edge = 0b001001;     // tau_1 = t on the main plane
-  static constexpr unsigned tension_edge = 0b011000;          // tau_1 = tau_2 = t
-  static constexpr unsigned tension_corner = 0b111000;        // tau_1 = tau_2 = tau_3 = t
+  static constexpr unsigned right_edge = 0b000011;         // tau_2 = tau_3 (triaxial extension)
+  static constexpr unsigned left_edge = 0b000101;          // tau_1 = tau_2 (triaxial compression)
+  static constexpr unsigned tension_plane = 0b001000;      // tau_1 = t
+  static constexpr unsigned main_tension_edge = 0b001001;  // tau_1 = t on the main plane
+  static constexpr unsigned tension_edge = 0b011000;       // tau_1 = tau_2 = t
+  static constexpr unsigned tension_corner = 0b111000;     // tau_1 = tau_2 = tau_3 = t
 
   explicit MohrCoulomb(const Parameters& p);
   static std::unique_ptr<Material> create(const ParameterMap& p);

@@ -1,8 +1,10 @@
 #include "geompm/materials/principal_return.hpp"
 
-#include <Eigen/LU>
+#include <Eigen/LU>  // the closed-form 3x3 inverse and determinant
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -10,52 +12,85 @@ namespace geompm {
 
 namespace {
 
-// At most three planes are active at once: a vertex of a surface in 3D principal space.
-using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 3, 3>;
-using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 3, 1>;
-
 // Kuhn-Tucker conditions are checked to this fraction of the largest stress in play: far above
 // the round-off of the linear solves, far below any stress that matters.
 constexpr double kkt_tolerance = 1e-9;
 
+// The inverse of the leading k x k block (k <= 3: at most three planes meet at a vertex of a
+// surface in principal space) in closed form; false when the block is singular relative to the
+// Hadamard bound |det| <= product of the row norms (planes that do not meet in an edge or a
+// vertex, or flows that cannot reach it).
+bool invert_leading_block(const Mat3& a, int k, Mat3& inverse) {
+  inverse.setZero();
+  double bound = 1.0;
+  for (int i = 0; i < k; ++i) bound *= a.row(i).head(k).norm();
+  constexpr double singular = 1e-12;
+  if (k == 1) {
+    if (!(std::abs(a(0, 0)) > 0)) return false;
+    inverse(0, 0) = 1.0 / a(0, 0);
+    return true;
+  }
+  if (k == 2) {
+    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+    if (!(std::abs(det) > singular * bound)) return false;
+    inverse(0, 0) = a(1, 1) / det;
+    inverse(0, 1) = -a(0, 1) / det;
+    inverse(1, 0) = -a(1, 0) / det;
+    inverse(1, 1) = a(0, 0) / det;
+    return true;
+  }
+  const double det = a.determinant();
+  if (!(std::abs(det) > singular * bound)) return false;
+  inverse = a.inverse();
+  return true;
+}
+
+// One candidate face: its planes, the multipliers and the returned stress.
 struct ActiveSetReturn {
   std::array<int, 3> plane{};
   int count = 0;
-  SmallVector multiplier;
+  Mat3 a_inverse;
+  Vec3 multiplier = Vec3::Zero();
   Vec3 stress;
   double violation = std::numeric_limits<double>::infinity();
 };
 
+// What every candidate of one trial state shares: f_i(tau_tr) and D^e g_j for each plane.
+struct TrialState {
+  Vec3 stress;
+  std::array<double, max_yield_planes> f{};
+  std::array<Vec3, max_yield_planes> elastic_flow;
+};
+
 // Eq. M.4: with the planes of `mask` active, f_i(tau) = 0 gives A dgamma = f(tau_tr) with
-// A_ij = n_i . D^e g_j, and tau = tau_tr - sum_j dgamma_j D^e g_j. Returns false when A is singular
-// (planes that do not meet in an edge or a vertex, or flows that cannot reach it).
-bool solve_active_set(unsigned mask, const Vec3& trial, const Mat3& de,
-                      std::span<const YieldPlane> planes, ActiveSetReturn& r) {
+// A_ij = n_i . D^e g_j, and tau = tau_tr - sum_j dgamma_j D^e g_j.
+bool solve_active_set(unsigned mask, const TrialState& t, std::span<const YieldPlane> planes,
+                      ActiveSetReturn& r) {
   r.count = 0;
-  for (int k = 0; k < static_cast<int>(planes.size()); ++k)
+  for (int k = 0; k < static_cast<int>(planes.size()) && r.count < 3; ++k)
     if (mask & (1u << k)) r.plane[r.count++] = k;
-  SmallMatrix a(r.count, r.count);
-  SmallVector f(r.count);
+  Mat3 a = Mat3::Identity();
+  Vec3 f = Vec3::Zero();
   for (int i = 0; i < r.count; ++i) {
-    const YieldPlane& pi = planes[r.plane[i]];
-    f(i) = pi.normal.dot(trial) - pi.limit;
-    for (int j = 0; j < r.count; ++j) a(i, j) = pi.normal.dot(de * planes[r.plane[j]].flow);
+    f(i) = t.f[r.plane[i]];
+    for (int j = 0; j < r.count; ++j)
+      a(i, j) = planes[r.plane[i]].normal.dot(t.elastic_flow[r.plane[j]]);
   }
-  const Eigen::FullPivLU<SmallMatrix> lu(a);
-  if (!lu.isInvertible()) return false;
-  r.multiplier = lu.solve(f);
-  r.stress = trial;
-  for (int j = 0; j < r.count; ++j) r.stress -= r.multiplier(j) * (de * planes[r.plane[j]].flow);
+  if (!invert_leading_block(a, r.count, r.a_inverse)) return false;
+  r.multiplier = r.a_inverse * f;
+  r.stress = t.stress;
+  for (int j = 0; j < r.count; ++j) r.stress -= r.multiplier(j) * t.elastic_flow[r.plane[j]];
   return true;
 }
 
 // Eq. M.5, scaled to a stress: the largest of a negative multiplier (as the stress it relaxes),
 // a violated plane and a broken order tau_1 >= tau_2 >= tau_3. Zero (or round-off) when the
 // return is admissible.
-double kkt_violation(const ActiveSetReturn& r, const Mat3& de, std::span<const YieldPlane> planes) {
+double kkt_violation(const ActiveSetReturn& r, const TrialState& t,
+                     std::span<const YieldPlane> planes) {
   double v = std::max(r.stress(1) - r.stress(0), r.stress(2) - r.stress(1));
   for (int j = 0; j < r.count; ++j)
-    v = std::max(v, -r.multiplier(j) * (de * planes[r.plane[j]].flow).norm());
+    v = std::max(v, -r.multiplier(j) * t.elastic_flow[r.plane[j]].norm());
   for (const YieldPlane& p : planes) v = std::max(v, p.normal.dot(r.stress) - p.limit);
   return v;
 }
@@ -87,16 +122,21 @@ std::vector<unsigned> active_sets_up_to_three(int plane_count) {
 PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& de,
                                        std::span<const YieldPlane> planes,
                                        std::span<const unsigned> candidates) {
+  assert(planes.size() <= static_cast<std::size_t>(max_yield_planes));
   PrincipalReturn out;
-  const Vec3 trial = de * trial_strain;
-  double scale = trial.cwiseAbs().maxCoeff();
-  for (const YieldPlane& p : planes) scale = std::max(scale, std::abs(p.limit));
-  const double tolerance = kkt_tolerance * scale;
-
+  TrialState t;
+  t.stress = de * trial_strain;
+  double scale = t.stress.cwiseAbs().maxCoeff();
   bool elastic = true;
-  for (const YieldPlane& p : planes) elastic = elastic && p.normal.dot(trial) - p.limit <= tolerance;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    t.f[k] = planes[k].normal.dot(t.stress) - planes[k].limit;
+    t.elastic_flow[k] = de * planes[k].flow;
+    scale = std::max(scale, std::abs(planes[k].limit));
+  }
+  const double tolerance = kkt_tolerance * scale;
+  for (std::size_t k = 0; k < planes.size(); ++k) elastic = elastic && t.f[k] <= tolerance;
   if (elastic) {
-    out.stress = trial;
+    out.stress = t.stress;
     out.tangent = de;
     return out;
   }
@@ -104,34 +144,31 @@ PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& de,
   ActiveSetReturn best, candidate;
   unsigned best_mask = 0;
   for (unsigned mask : candidates) {
-    if (!solve_active_set(mask, trial, de, planes, candidate)) continue;
-    candidate.violation = kkt_violation(candidate, de, planes);
+    if (!solve_active_set(mask, t, planes, candidate)) continue;
+    candidate.violation = kkt_violation(candidate, t, planes);
     if (candidate.violation < best.violation) {
       best = candidate;
       best_mask = mask;
     }
     if (best.violation <= tolerance) break;
   }
-
   if (best_mask == 0) {  // every face singular: not possible for a surface with a plane
-    out.stress = trial;
+    out.stress = t.stress;
     out.tangent = de;
     return out;
   }
+
   out.active = best_mask;
   out.stress = best.stress;
   // Eq. M.6: tau = tau_tr - D^e G A^-1 (N^T tau_tr - k), so
   // d tau / d eps_tr = D^e - D^e G A^-1 N^T D^e, with N, G the normals and flows of the face.
-  Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, 3> n(3, best.count),
-      g(3, best.count);
-  for (int j = 0; j < best.count; ++j) {
-    n.col(j) = planes[best.plane[j]].normal;
-    g.col(j) = planes[best.plane[j]].flow;
-    out.plastic_strain += best.multiplier(j) * planes[best.plane[j]].flow;
+  out.tangent = de;
+  for (int i = 0; i < best.count; ++i) {
+    const Vec3 normal_de = de * planes[best.plane[i]].normal;  // D^e symmetric: (n^T D^e)^T
+    for (int j = 0; j < best.count; ++j)
+      out.tangent -= best.a_inverse(j, i) * t.elastic_flow[best.plane[j]] * normal_de.transpose();
+    out.plastic_strain += best.multiplier(i) * planes[best.plane[i]].flow;
   }
-  const SmallMatrix a = n.transpose() * de * g;
-  const SmallMatrix a_inverse = a.fullPivLu().inverse();
-  out.tangent = de - (de * g) * a_inverse * (n.transpose() * de);
   return out;
 }
 

@@ -27,6 +27,9 @@ struct YieldPlane {
   double limit = 0;
 };
 
+/// A surface has at most this many planes (Mohr-Coulomb with its tension cut-off has six).
+inline constexpr int max_yield_planes = 8;
+
 /// The result of a principal return: stresses and tangent in the order of the trial strains.
 struct PrincipalReturn {
   Vec3 stress = Vec3::Zero();          // tau_a
@@ -46,7 +49,8 @@ Mat3 principal_elasticity(double lambda, double mu);
 /// (planes before edges before vertices), in plane order within a size.
 std::vector<unsigned> active_sets_up_to_three(int plane_count);
 
-/// The return to the yield planes of principal trial strains sorted eps_1 >= eps_2 >= eps_3.
+/// The return to the yield planes (at most max_yield_planes) of principal trial strains sorted
+/// eps_1 >= eps_2 >= eps_3.
 /// Elastic when no plane is violated; otherwise the first set of `candidates` whose return
 /// satisfies the Kuhn-Tucker conditions (eq. M.5) is taken. Should none do (it does not happen for
 /// the surfaces of this room, but a tolerance is involved) the candidate that violates them least

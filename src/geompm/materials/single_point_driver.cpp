@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 
 #include "geompm/core/error.hpp"
@@ -84,22 +84,26 @@ std::vector<DriverState> SinglePointDriver::follow(const PathSegment& segment) {
         r(a) = stress(free[a]) - target(free[a]);
         scale = std::max({scale, std::abs(stress(free[a])), std::abs(target(free[a]))});
       }
-      scale = std::max({scale, stress.cwiseAbs().maxCoeff(), 1e-12 * material_.reference_modulus()});
+      scale =
+          std::max({scale, stress.cwiseAbs().maxCoeff(), 1e-12 * material_.reference_modulus()});
       if (n_free == 0 || r.cwiseAbs().maxCoeff() <= tolerance * scale) break;
       if (iteration == max_iterations)
-        throw RunError(fmt::format("single-point driver: no convergence in {} iterations "
-                                   "(increment {} of {}, residual {:g})",
-                                   max_iterations, step, segment.increments,
-                                   r.cwiseAbs().maxCoeff()));
+        throw RunError(
+            fmt::format("single-point driver: no convergence in {} iterations "
+                        "(increment {} of {}, residual {:g})",
+                        max_iterations, step, segment.increments, r.cwiseAbs().maxCoeff()));
       Eigen::MatrixXd jacobian(n_free, n_free);
       for (int a = 0; a < n_free; ++a)
         for (int b = 0; b < n_free; ++b)
           jacobian(a, b) = component_tangent(next.tangent, free[a], free[b]);
-      const Eigen::FullPivLU<Eigen::MatrixXd> lu(jacobian);
-      if (!lu.isInvertible())
-        throw RunError("single-point driver: the tangent is singular in the stress-controlled "
-                       "components (a state at the apex of the yield surface?)");
-      const Eigen::VectorXd delta = lu.solve(-r);
+      // At an edge or the apex of a perfectly plastic surface the stresses do not fix every free
+      // strain (in triaxial compression on the edge tau_1 = tau_2 only eps_1 + eps_2 is fixed:
+      // the flow may be shared between the two planes in any proportion), so J is singular. The
+      // minimum-norm correction leaves the undetermined combination as it was: symmetric paths
+      // stay symmetric. A target the material cannot reach shows as a residual that does not fall.
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(jacobian);
+      solver.setThreshold(1e-10);
+      const Eigen::VectorXd delta = solver.solve(-r);
       for (int a = 0; a < n_free; ++a) increment(free[a]) += delta(a);
       evaluate(from_components(increment), next);
     }

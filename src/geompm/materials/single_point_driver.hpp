@@ -49,6 +49,8 @@ class SinglePointDriver {
   /// Starts from zero strain and stress with the given internal variables (call the material's
   /// initialise_point on them first when it has any).
   explicit SinglePointDriver(const Material& material, const InternalVariables& internal = {});
+  /// The driver keeps a reference to the material: a temporary would not outlive it.
+  SinglePointDriver(const Material&& material, const InternalVariables& internal = {}) = delete;
 
   /// Applies a segment and returns the state after each of its increments. Throws RunError when
   /// Newton does not converge in an increment.

@@ -29,16 +29,18 @@ constexpr std::array<unsigned, 3> tresca_faces = {Tresca::main_plane, Tresca::ri
 Tresca::Tresca(const Parameters& p) : p_(p) {}
 
 std::unique_ptr<Material> Tresca::create(const ParameterMap& map) {
-  ParameterReader r("tresca", map,
-                    {"E", "E_over_su", "nu", "density", "su", "su_gradient",
-                     "su_reference_level", "su_min"});
+  ParameterReader r(
+      "tresca", map,
+      {"E", "E_over_su", "nu", "density", "su", "su_gradient", "su_reference_level", "su_min"});
   Parameters p;
   const bool has_modulus = map.count("E") > 0, has_ratio = map.count("E_over_su") > 0;
   if (has_modulus == has_ratio)
-    throw ParameterError("E", "material model 'tresca' needs exactly one of 'E' (Young's modulus) "
-                              "and 'E_over_su' (Young's modulus as a ratio to s_u)");
+    throw ParameterError("E",
+                         "material model 'tresca' needs exactly one of 'E' (Young's modulus) "
+                         "and 'E_over_su' (Young's modulus as a ratio to s_u)");
   if (has_modulus) p.youngs_modulus = ParameterReader::positive("E", r.required("E"));
-  if (has_ratio) p.modulus_to_strength = ParameterReader::positive("E_over_su", r.required("E_over_su"));
+  if (has_ratio)
+    p.modulus_to_strength = ParameterReader::positive("E_over_su", r.required("E_over_su"));
   p.poisson_ratio = ParameterReader::poisson_ratio("nu", r.required("nu"));
   p.density = ParameterReader::non_negative("density", r.optional("density", 0));
   p.strength = ParameterReader::positive("su", r.required("su"));
@@ -48,7 +50,8 @@ std::unique_ptr<Material> Tresca::create(const ParameterMap& map) {
                          "material model 'tresca' needs 'su_reference_level' (the vertical "
                          "coordinate where s_u = su) when 'su_gradient' is not zero");
   p.reference_level = r.optional("su_reference_level", 0);
-  if (map.count("su_min")) p.minimum_strength = ParameterReader::positive("su_min", r.required("su_min"));
+  if (map.count("su_min"))
+    p.minimum_strength = ParameterReader::positive("su_min", r.required("su_min"));
   return std::make_unique<Tresca>(p);
 }
 
@@ -63,12 +66,11 @@ void Tresca::initialise_point(const Vec3& position, int dimension,
   const double y = position(dimension - 1);
   const double su = strength_at(y);
   if (!(su > 0))
-    throw ParameterError("su_min",
-                         fmt::format("material 'tresca': s_u = {:g} at the point at height {:g} "
-                                     "(su = {:g} at su_reference_level = {:g}, su_gradient = {:g}); "
-                                     "give a positive 'su_min'",
-                                     su, y, p_.strength, p_.reference_level,
-                                     p_.strength_gradient));
+    throw ParameterError(
+        "su_min", fmt::format("material 'tresca': s_u = {:g} at the point at height {:g} "
+                              "(su = {:g} at su_reference_level = {:g}, su_gradient = {:g}); "
+                              "give a positive 'su_min'",
+                              su, y, p_.strength, p_.reference_level, p_.strength_gradient));
   internal[strength_index] = su;
   internal[modulus_index] = p_.youngs_modulus > 0 ? p_.youngs_modulus : p_.modulus_to_strength * su;
 }
@@ -98,14 +100,13 @@ double Tresca::strain_energy(const Mat3& eps) const {
 PrincipalReturn Tresca::principal_return(const Vec3& trial_principal_strain,
                                          const InternalVariables& internal) const {
   const auto [su, E] = point_strength_and_modulus(internal);
-  const Mat3 de = principal_elasticity(lame_lambda(E, p_.poisson_ratio),
-                                       shear_modulus(E, p_.poisson_ratio));
+  const Mat3 de =
+      principal_elasticity(lame_lambda(E, p_.poisson_ratio), shear_modulus(E, p_.poisson_ratio));
   const auto planes = tresca_planes(su);
   return return_to_yield_planes(trial_principal_strain, de, planes, tresca_faces);
 }
 
-void Tresca::update(const Mat3& eps, const InternalVariables& internal_n,
-                    StressUpdate& out) const {
+void Tresca::update(const Mat3& eps, const InternalVariables& internal_n, StressUpdate& out) const {
   const auto [su, E] = point_strength_and_modulus(internal_n);
   out.internal = internal_n;
   out.internal[strength_index] = su;

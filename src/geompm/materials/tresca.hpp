@@ -25,20 +25,20 @@ namespace geompm {
 class Tresca final : public Material {
  public:
   struct Parameters {
-    double youngs_modulus = 0;      // E; 0 when the stiffness is given as E_over_su
-    double modulus_to_strength = 0; // E / s_u; 0 when E is given
+    double youngs_modulus = 0;       // E; 0 when the stiffness is given as E_over_su
+    double modulus_to_strength = 0;  // E / s_u; 0 when E is given
     double poisson_ratio = 0.49;
     double density = 0;
-    double strength = 0;            // s_u at the reference level
-    double strength_gradient = 0;   // d s_u / d depth
-    double reference_level = 0;     // vertical coordinate where s_u = strength
-    double minimum_strength = 0;    // floor of s_u; 0 for none
+    double strength = 0;           // s_u at the reference level
+    double strength_gradient = 0;  // d s_u / d depth
+    double reference_level = 0;    // vertical coordinate where s_u = strength
+    double minimum_strength = 0;   // floor of s_u; 0 for none
   };
 
   // Internal variables (docs/materials.md §2.4).
-  static constexpr int strength_index = 0;          // s_u of the point
-  static constexpr int modulus_index = 1;           // Young's modulus of the point
-  static constexpr int plastic_strain_index = 2;    // equivalent plastic strain (eq. M.8)
+  static constexpr int strength_index = 0;        // s_u of the point
+  static constexpr int modulus_index = 1;         // Young's modulus of the point
+  static constexpr int plastic_strain_index = 2;  // equivalent plastic strain (eq. M.8)
 
   // Return regions: bit k set when plane k of eq. M.9 is active.
   static constexpr unsigned main_plane = 0b001;

@@ -12,13 +12,6 @@ namespace geompm {
 
 namespace {
 
-template <class E>
-Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index c) {
-  Eigen::Matrix<double, E::nodes, E::dim> X;
-  const auto nodes = mesh.cell_nodes(c);
-  for (int a = 0; a < E::nodes; ++a) X.row(a) = mesh.nodes[nodes[a]].head<E::dim>().transpose();
-  return X;
-}
 
 // A bubble over the reference cell: 1 at the centre, 0 on the cell boundary (DDMP blending).
 double cell_bubble(CellType type, const Vec3& xi) {
@@ -124,7 +117,8 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
 #pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
     const Index c = active_cells_[ci];
-    const auto X = cell_coordinates<E>(mesh_, c);
+    const Eigen::Matrix<double, E::nodes, E::dim> X =
+        cell_node_coordinates<cell_type_of<E>>(mesh_, c).transpose();
     double occupied = 0.0;
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
@@ -217,7 +211,8 @@ void GridSystem::empty_cell_stiffness_typed() {
   for (Index ci = 0; ci < n_active; ++ci) {
     const double weight = 1.0 - cell_fill_[ci];
     if (weight <= 0.0) continue;
-    const auto X = cell_coordinates<E>(mesh_, active_cells_[ci]);
+    const Eigen::Matrix<double, E::nodes, E::dim> X =
+        cell_node_coordinates<cell_type_of<E>>(mesh_, active_cells_[ci]).transpose();
     Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() + std::size_t(ci) * n * n);
     for (int q = 0; q < E::quadrature_size(); ++q) {
       const auto xi = E::quadrature_point(q);
@@ -345,6 +340,20 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
 // Phase 2: Lagrangian
 // ---------------------------------------------------------------------------------------------
 
+PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) const {
+  return {materials_[points.material[p]],        points.position[p],
+          points.volume[p],                      points.deformation_gradient[p],
+          points.elastic_left_cauchy_green[p], points.internal[p]};
+}
+
+void GridSystem::store_trial(Index p, const FiniteStrainState& state, double volume) {
+  trial_.stress[p] = state.cauchy_stress;
+  trial_.F[p] = state.deformation_gradient;
+  trial_.be[p] = state.elastic_left_cauchy_green;
+  trial_.internal[p] = state.internal;
+  trial_.volume[p] = volume;
+}
+
 bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                 SparseMatrix* tangent) {
   return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
@@ -411,12 +420,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
                                                                     std::size_t(p) * nen * dim);
-        const PointStartState start{materials_[points.material[p]],
-                                    points.position[p],
-                                    points.volume[p],
-                                    points.deformation_gradient[p],
-                                    points.elastic_left_cauchy_green[p],
-                                    points.internal[p]};
+        const PointStartState start = start_state(points, p);
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
           admissible = false;
           continue;
@@ -425,11 +429,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         if (tangent) K_cell += r.stiffness;
         if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
           add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
-        trial_.stress[p] = r.state.cauchy_stress;
-        trial_.F[p] = r.state.deformation_gradient;
-        trial_.be[p] = r.state.elastic_left_cauchy_green;
-        trial_.internal[p] = r.state.internal;
-        trial_.volume[p] = r.volume;
+        store_trial(p, r.state, r.volume);
       }
       for (int a = 0; a < nen; ++a)
         for (int i = 0; i < dim; ++i)
@@ -555,20 +555,11 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
     du_local.resize(ns, Dim);
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil_nodes_[begin + a] * Dim + i);
-    const PointStartState start{materials_[points.material[p]],
-                                points.position[p],
-                                points.volume[p],
-                                points.deformation_gradient[p],
-                                points.elastic_left_cauchy_green[p],
-                                points.internal[p]};
+    const PointStartState start = start_state(points, p);
     if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
     if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
       add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
-    trial_.stress[p] = r.state.cauchy_stress;
-    trial_.F[p] = r.state.deformation_gradient;
-    trial_.be[p] = r.state.elastic_left_cauchy_green;
-    trial_.internal[p] = r.state.internal;
-    trial_.volume[p] = r.volume;
+    store_trial(p, r.state, r.volume);
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i)
         f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);

@@ -16,10 +16,13 @@
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/physics/finite_strain.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
+
+struct PointStartState;  // physics/point_kernel.hpp
 
 struct GridSettings {
   Kinematics kinematics = Kinematics::PlaneStrain;
@@ -117,6 +120,8 @@ class GridSystem {
   bool dual_domain_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                 SparseMatrix* tangent);
   void colour_active_cells();
+  PointStartState start_state(const MaterialPoints& points, Index p) const;
+  void store_trial(Index p, const FiniteStrainState& state, double volume);
 
   const Mesh& mesh_;
   const MeshTopology& topology_;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 
 namespace geompm {
@@ -65,13 +66,6 @@ int integer_root(int n, int power) {
   return -1;
 }
 
-template <class E>
-Eigen::Matrix<double, E::nodes, E::dim> cell_coordinates(const Mesh& mesh, Index c) {
-  Eigen::Matrix<double, E::nodes, E::dim> X;
-  const auto nodes = mesh.cell_nodes(c);
-  for (int a = 0; a < E::nodes; ++a) X.row(a) = mesh.nodes[nodes[a]].head<E::dim>().transpose();
-  return X;
-}
 
 // |dX/dxi| (times the radius in axisymmetry) at xi: the volume density in reference space.
 template <class E>
@@ -198,7 +192,8 @@ std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axis
   }
   return dispatch_cell_type(mesh.cell_type, [&](auto element) -> std::vector<SeedPoint> {
     using E = decltype(element);
-    const auto X = cell_coordinates<E>(mesh, c);
+    const Eigen::Matrix<double, E::nodes, E::dim> X =
+        cell_node_coordinates<cell_type_of<E>>(mesh, c).transpose();
     if constexpr (std::is_same_v<E, Element<CellType::Quad4>>)
       return seed_tensor_cell<E>(X, integer_root(count, 2), axisymmetric);
     else if constexpr (std::is_same_v<E, Element<CellType::Hex8>>)

@@ -8,89 +8,34 @@
 #include <fstream>
 
 #include "geompm/io/model_reader.hpp"
+#include "model_reader_support.hpp"
 
 namespace geompm {
 namespace {
 
-// 1-based line of the first occurrence of `marker` in `text`.
-int line_of(const std::string& text, const std::string& marker) {
-  const std::size_t at = text.find(marker);
-  EXPECT_NE(at, std::string::npos) << "marker not in text: " << marker;
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+using namespace geompm::testing;
+
+// The valid model of model_reader_support.hpp with settings away from the defaults and the other
+// ways to write some values: a numeric history component, unquoted load expressions, a fixity on
+// the boundary "right", a plot of two columns.
+const std::string& column_model() {
+  static const std::string text = apply(
+      kValidModel,
+      {{"growth: 1.5, cutback: 0.5, easy_iterations: 4",
+        "growth: 1.25, cutback: 0.25, easy_iterations: 3"},
+       {"newton: {max_iterations: 15, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}",
+        "newton: {max_iterations: 12, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-7}"},
+       {"      - {boundary: bottom, fix: [x, y]}\n",
+        "      - {boundary: bottom, fix: [x, y]}\n      - {boundary: right, fix: x}\n"},
+       {"force: [\"0\", \"-10*t\"]", "force: [0, -10*t]"},
+       {"{quantity: reaction, boundary: bottom, component: y}",
+        "{quantity: reaction, boundary: bottom, component: 1}"},
+       {"y: [reaction_bottom_y],", "y: [reaction_bottom_y, time],"}});
+  return text;
 }
 
-const std::string kColumnModel =
-    R"m(# A column under self-weight, then loaded at the top (kN, m, s, t).
-title: Column under self-weight
-analysis:
-  kinematics: plane_strain
-mesh:
-  generate:
-    cell: quad4
-    origin: [0, 0]
-    x: {length: 1, cells: 1}
-    y:
-      - {length: 40, cells: 16}
-      - {length: 20, cells: 8, ratio: 2}
-materials:
-  soil:
-    model: linear_elastic
-    E: 1000
-    nu: 0.0
-    density: 0.08
-bodies:
-  column:
-    material: soil
-    region: {box: {min: [0, 0], max: [1, 50]}}
-    points_per_cell: 4
-    initial_velocity: ["0.1*sin(pi*y/50)", "0"]
-  block:
-    material: soil
-    region:
-      polygon: [[0, 50], [1, 50], [0.5, 55]]
-    points_per_cell: 9
-point_sets:
-  top:
-    body: column
-    region: {box: {min: [0, 49], max: [1, 50]}}
-  side:
-    region: {circle: {center: [0.5, 25], radius: 0.5}}
-phases:
-  - name: gravity
-    duration: 1.0
-    time_step: {initial: 0.1, min: 1.0e-4, max: 0.2, growth: 1.25, cutback: 0.25, easy_iterations: 3}
-    dynamics: quasi_static
-    newton: {max_iterations: 12, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-7}
-    gravity: {acceleration: [0, -10], ramp: true}
-    fixities:
-      - {boundary: left, fix: normal}
-      - {plane: {axis: x, value: 1.0}, fix: normal}
-      - {boundary: bottom, fix: all}
-  - name: loading
-    duration: 2
-    time_step: 0.05
-    dynamics: {newmark: {beta: 0.3, gamma: 0.6}}
-    gravity: {acceleration: [0, -10]}
-    fixities:
-      - {boundary: bottom, fix: [x, y]}
-      - {boundary: right, fix: x}
-    prescribed_motion:
-      - {point_set: top, displacement: [~, "-0.1*t"]}
-    loads:
-      - {point_set: side, force: [0, -10*t]}
-output:
-  vtk: {every: 2, grid: false}
-  history:
-    - {quantity: displacement, point_set: top, component: y, name: top_uy}
-    - {quantity: reaction, boundary: bottom, component: 1}
-    - {quantity: kinetic_energy}
-  plots:
-    - {file: settlement.png, x: top_uy, y: [reaction_bottom_y, time], title: Settlement, y_scale: -1}
-numerics: {empty_cell_stiffness: 1.0e-5, buffer_layers: 2, lost_points: remove, linear_solver: sparse_lu}
-)m";
-
 TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
-  const std::string& text = kColumnModel;
+  const std::string& text = column_model();
   const spec::Model m = read_model_from_string(text, "column.yaml");
 
   EXPECT_EQ(m.file, "column.yaml");

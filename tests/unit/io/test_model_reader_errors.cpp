@@ -7,89 +7,14 @@
 #include <algorithm>
 
 #include "geompm/io/model_reader.hpp"
+#include "model_reader_support.hpp"
 
 namespace geompm {
 namespace {
 
-// The valid model every case starts from, by section so that a case can replace a whole one.
-const std::string kHeader = R"m(# A column under self-weight, then loaded at the top (kN, m, s, t).
-title: Column under self-weight
-analysis:
-  kinematics: plane_strain
-)m";
-const std::string kMesh = R"m(mesh:
-  generate:
-    cell: quad4
-    origin: [0, 0]
-    x: {length: 1, cells: 1}
-    y:
-      - {length: 40, cells: 16}
-      - {length: 20, cells: 8, ratio: 2}
-)m";
-const std::string kMaterials = R"m(materials:
-  soil:
-    model: linear_elastic
-    E: 1000
-    nu: 0.0
-    density: 0.08
-)m";
-const std::string kBodies = R"m(bodies:
-  column:
-    material: soil
-    region: {box: {min: [0, 0], max: [1, 50]}}
-    points_per_cell: 4
-    initial_velocity: ["0.1*sin(pi*y/50)", "0"]
-  block:
-    material: soil
-    region:
-      polygon: [[0, 50], [1, 50], [0.5, 55]]
-    points_per_cell: 9
-point_sets:
-  top:
-    body: column
-    region: {box: {min: [0, 49], max: [1, 50]}}
-  side:
-    region: {circle: {center: [0.5, 25], radius: 0.5}}
-)m";
-const std::string kPhases = R"m(phases:
-  - name: gravity
-    duration: 1.0
-    time_step: {initial: 0.1, min: 1.0e-4, max: 0.2, growth: 1.5, cutback: 0.5, easy_iterations: 4}
-    dynamics: quasi_static
-    newton: {max_iterations: 15, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}
-    gravity: {acceleration: [0, -10], ramp: true}
-    fixities:
-      - {boundary: left, fix: normal}
-      - {plane: {axis: x, value: 1.0}, fix: normal}
-      - {boundary: bottom, fix: all}
-  - name: loading
-    duration: 2
-    time_step: 0.05
-    dynamics: {newmark: {beta: 0.3, gamma: 0.6}}
-    gravity: {acceleration: [0, -10]}
-    fixities:
-      - {boundary: bottom, fix: [x, y]}
-    prescribed_motion:
-      - {point_set: top, displacement: [~, "-0.1*t"]}
-    loads:
-      - {point_set: side, force: ["0", "-10*t"]}
-)m";
-const std::string kOutput = R"m(output:
-  vtk: {every: 2, grid: false}
-  history:
-    - {quantity: displacement, point_set: top, component: y, name: top_uy}
-    - {quantity: reaction, boundary: bottom, component: y}
-    - {quantity: kinetic_energy}
-  plots:
-    - {file: settlement.png, x: top_uy, y: [reaction_bottom_y], title: Settlement, y_scale: -1}
-numerics: {empty_cell_stiffness: 1.0e-5, buffer_layers: 2, lost_points: remove, linear_solver: sparse_lu}
-)m";
-const std::string kValidModel = kHeader + kMesh + kMaterials + kBodies + kPhases + kOutput;
+using namespace geompm::testing;
 
-struct Edit {
-  std::string from, to;
-};
-
+// The cases edit kValidModel (model_reader_support.hpp).
 struct MalformedCase {
   std::string name;
   std::vector<Edit> edits;  // applied in turn; each `from` must occur exactly once
@@ -97,29 +22,6 @@ struct MalformedCase {
   std::string key_path;     // expected key path ("" for YAML syntax errors)
   std::string explanation;  // a piece of the expected message
 };
-
-std::size_t occurrences(const std::string& text, const std::string& part) {
-  std::size_t count = 0;
-  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
-    ++count;
-  return count;
-}
-
-std::string apply(std::string text, const std::vector<Edit>& edits) {
-  for (const Edit& edit : edits) {
-    EXPECT_EQ(occurrences(text, edit.from), 1u) << "edit source not unique: " << edit.from;
-    const std::size_t at = text.find(edit.from);
-    if (at != std::string::npos) text.replace(at, edit.from.size(), edit.to);
-  }
-  return text;
-}
-
-int line_of(const std::string& text, const std::string& marker) {
-  EXPECT_EQ(occurrences(text, marker), 1u) << "line marker not unique: " << marker;
-  const std::size_t at = text.find(marker);
-  return 1 +
-         static_cast<int>(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n'));
-}
 
 // The message of the InputError thrown for `text`, or a failure.
 std::string input_error(const std::string& text, const std::string& file = "model.yaml") {
@@ -243,10 +145,10 @@ const std::vector<MalformedCase> kMalformedCases = {
      "mesh.generate.cell",
      "'hex8' cells are 3D"},
     {"unknown_material_model",
-     {{"model: linear_elastic", "model: mohr_coulomb"}},
-     "mohr_coulomb",
+     {{"model: linear_elastic", "model: cam_clay_9000"}},
+     "cam_clay_9000",
      "materials.soil.model",
-     "unknown material model 'mohr_coulomb'"},
+     "unknown material model 'cam_clay_9000'"},
     {"unknown_material",
      {{"    material: soil\n    region: {box: {min: [0, 0]",
        "    material: sand\n    region: {box: {min: [0, 0]"}},

@@ -1,0 +1,72 @@
+// Helpers shared by the material tests: random rotations, finite-difference tangents, and trial
+// strains built from a chosen returned stress (so that the region of a trial state is known).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <random>
+
+#include "geompm/materials/material.hpp"
+#include "geompm/materials/principal_return.hpp"
+
+namespace geompm::test_support {
+
+/// A uniformly random rotation (det +1), or with `reflect` an improper one (det -1).
+inline Mat3 random_rotation(std::mt19937& rng, bool reflect = false) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  const Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+  Mat3 r = q.normalized().toRotationMatrix();
+  if (reflect) r.col(0) *= -1.0;
+  return r;
+}
+
+/// The tensor with principal values `principal` on the axes of `rotation`.
+inline Mat3 with_axes(const Vec3& principal, const Mat3& rotation) {
+  return rotation * principal.asDiagonal() * rotation.transpose();
+}
+
+/// Central finite difference of update() with respect to the trial strain: column (3k+l) is
+/// d tau / d eps for the symmetric increment (e_k e_l + e_l e_k) / 2, so that it compares with
+/// a tangent that is symmetric in kl.
+inline Tensor4 finite_difference_tangent(const Material& m, const Mat3& eps,
+                                         const InternalVariables& internal, double h) {
+  Tensor4 d;
+  StressUpdate plus, minus;
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) {
+      Mat3 e = Mat3::Zero();
+      e(k, l) += 0.5 * h;
+      e(l, k) += 0.5 * h;
+      m.update(eps + e, internal, plus);
+      m.update(eps - e, internal, minus);
+      d.col(pair_index(k, l)) = flatten(plus.kirchhoff - minus.kirchhoff) / (2 * h);
+    }
+  return d;
+}
+
+/// ||D_fd - D|| / ||D||, or relative to `reference` (the elastic tangent) where D vanishes (at a
+/// vertex of the yield surface the stress is fixed and D = 0).
+inline double tangent_error(const Tensor4& fd, const Tensor4& d, const Tensor4& reference) {
+  const double norm = d.norm() > 1e-6 * reference.norm() ? d.norm() : reference.norm();
+  return (fd - d).norm() / norm;
+}
+
+/// Principal trial strains whose return is the principal stress `returned`, reached through the
+/// flows of `planes` (bit k of `mask`) with the multipliers `gamma`: by eq. M.4 read backwards,
+/// eps_tr = (D^e)^-1 (tau + D^e sum_j gamma_j g_j).
+inline Vec3 trial_strain_for(const Vec3& returned, const Mat3& de,
+                             const std::vector<YieldPlane>& planes, unsigned mask,
+                             const std::vector<double>& gamma) {
+  Vec3 eps = de.inverse() * returned;
+  int j = 0;
+  for (int k = 0; k < static_cast<int>(planes.size()); ++k)
+    if (mask & (1u << k)) eps += gamma.at(j++) * planes[k].flow;
+  return eps;
+}
+
+/// The principal values of eps sorted descending (the input order of principal_return).
+inline Vec3 sorted_descending(Vec3 v) {
+  std::sort(v.data(), v.data() + 3, [](double a, double b) { return a > b; });
+  return v;
+}
+
+}  // namespace geompm::test_support
