@@ -38,7 +38,9 @@ bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& 
           for (int l = 0; l < 3; ++l)
             B(pair_index(i, j), pair_index(k, l)) =
                 (i == k ? be_trial(j, l) : 0.0) + (j == k ? be_trial(i, l) : 0.0);
-    out.spatial_tangent = (0.5 / out.jacobian) * (update.tangent * (L * B));
+    // lazyProduct: coefficient-based 9x9 products, without the packing of Eigen's blocked GEMM.
+    const Tensor4 LB = L.lazyProduct(B);
+    out.spatial_tangent = (0.5 / out.jacobian) * update.tangent.lazyProduct(LB);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         for (int l = 0; l < 3; ++l)

@@ -209,8 +209,9 @@ void GridSystem::empty_cell_stiffness_typed() {
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
 #pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
+    // Full cells whose point volumes sum to a hair below the cell's get none (round-off).
     const double weight = 1.0 - cell_fill_[ci];
-    if (weight <= 0.0) continue;
+    if (weight <= 1e-9) continue;
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(mesh_, active_cells_[ci]).transpose();
     Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() + std::size_t(ci) * n * n);

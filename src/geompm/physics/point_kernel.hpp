@@ -117,7 +117,8 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
       for (int d = 0; d < nc; ++d)
         A(c, d) = out.state.spatial_tangent(pair_index(GC::row[c], GC::col[c]),
                                             pair_index(GC::row[d], GC::col[d]));
-    out.stiffness.noalias() = out.volume * (B.transpose() * (A * B));
+    const Eigen::Matrix<double, nc, n_dofs> AB = A.lazyProduct(B);
+    out.stiffness.noalias() = out.volume * B.transpose().lazyProduct(AB);
   }
   return true;
 }
