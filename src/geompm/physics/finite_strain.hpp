@@ -22,12 +22,17 @@ struct FiniteStrainState {
   Mat3 cauchy_stress;              // sigma = tau / J
   InternalVariables internal{};
   double jacobian = 1.0;    // J = det F
-  Tensor4 spatial_tangent;  // a above (only when requested)
+  // a above (only when requested), restricted to the requested components: entry (c, d) is
+  // a_{ij kl} with (i, j) the c-th and (k, l) the d-th requested pair (all nine in natural
+  // order by default).
+  Tensor4 spatial_tangent;
 };
 
 /// Updates one point. Returns false if dF is not invertible with det > 0 (the step is cut back).
+/// `components` (pair indices 3i+j, `count` of them) limits the tangent to the components the
+/// caller can use: five in 2D, where only xx, xy, yx, yy, zz of a gradient are non-zero.
 bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& F_n,
                           const Mat3& be_n, const InternalVariables& internal_n, bool want_tangent,
-                          FiniteStrainState& out);
+                          FiniteStrainState& out, const int* components = nullptr, int count = 9);
 
 }  // namespace geompm

@@ -23,12 +23,14 @@ struct GradientComponents<2> {
   static constexpr int count = 5;
   static constexpr int row[5] = {0, 0, 1, 1, 2};
   static constexpr int col[5] = {0, 1, 0, 1, 2};
+  static constexpr int pairs[5] = {0, 1, 3, 4, 8};  // 3 row + col
 };
 template <>
 struct GradientComponents<3> {
   static constexpr int count = 9;
   static constexpr int row[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
   static constexpr int col[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+  static constexpr int pairs[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
 };
 
 /// What a point knows of the grid during a step: shape values and reference gradients at the
@@ -88,7 +90,8 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
     radius = R + s.N.dot(du.col(0));
     dF(2, 2) = radius / R;
   }
-  if (!finite_strain_update(*p.material, dF, p.F, p.be, p.internal, want_tangent, out.state))
+  if (!finite_strain_update(*p.material, dF, p.F, p.be, p.internal, want_tangent, out.state,
+                            GC::pairs, nc))
     return false;
 
   const double dJ = dF.determinant();
@@ -112,11 +115,7 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   out.internal_force.noalias() = out.volume * (B.transpose() * sigma);
 
   if (want_tangent) {
-    Eigen::Matrix<double, nc, nc> A;
-    for (int c = 0; c < nc; ++c)
-      for (int d = 0; d < nc; ++d)
-        A(c, d) = out.state.spatial_tangent(pair_index(GC::row[c], GC::col[c]),
-                                            pair_index(GC::row[d], GC::col[d]));
+    const Eigen::Matrix<double, nc, nc> A = out.state.spatial_tangent.template topLeftCorner<nc, nc>();
     const Eigen::Matrix<double, nc, n_dofs> AB = A.lazyProduct(B);
     out.stiffness.noalias() = out.volume * B.transpose().lazyProduct(AB);
   }
