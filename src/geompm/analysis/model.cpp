@@ -223,9 +223,9 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
         } catch (const ParameterError& e) {
           SourceLocation where = spec.materials[material].source;
           where.key_path += "." + e.key();
-          throw InputError(where, fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')",
-                                              e.what(), s.position.x(), s.position.y(),
-                                              s.position.z(), body.name));
+          throw InputError(
+              where, fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')", e.what(),
+                                 s.position.x(), s.position.y(), s.position.z(), body.name));
         }
         for (int d = 0; d < dim; ++d)
           model->points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);

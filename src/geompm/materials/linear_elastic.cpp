@@ -1,21 +1,9 @@
 #include "geompm/materials/linear_elastic.hpp"
 
-#include "geompm/materials/parameters.hpp"
-
 namespace geompm {
 
 LinearElastic::LinearElastic(double E, double nu, double density)
-    : E_(E), nu_(nu), density_(density), lambda_(lame_lambda(E, nu)), mu_(shear_modulus(E, nu)) {
-  elasticity_ = isotropic_elasticity4(lambda_, mu_);
-}
-
-std::unique_ptr<Material> LinearElastic::create(const ParameterMap& p) {
-  ParameterReader r("linear_elastic", p, {"E", "nu", "density"});
-  return std::make_unique<LinearElastic>(ParameterReader::positive("E", r.required("E")),
-                                         ParameterReader::poisson_ratio("nu", r.required("nu")),
-                                         ParameterReader::non_negative("density",
-                                                                       r.optional("density", 0)));
-}
+    : IsotropicElastic(E, nu, density), elasticity_(isotropic_elasticity4(lambda_, mu_)) {}
 
 void LinearElastic::update(const Mat3& eps, const InternalVariables& internal_n,
                            StressUpdate& out) const {

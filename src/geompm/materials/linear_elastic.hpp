@@ -4,24 +4,21 @@
 // "hencky" names the same law.
 #pragma once
 
-#include "geompm/materials/material.hpp"
+#include "geompm/materials/isotropic_elastic.hpp"
 
 namespace geompm {
 
-class LinearElastic final : public Material {
+class LinearElastic final : public IsotropicElastic {
  public:
   LinearElastic(double youngs_modulus, double poisson_ratio, double density);
   static std::unique_ptr<Material> create(const ParameterMap& p);
 
   void update(const Mat3& trial_elastic_strain, const InternalVariables& internal_n,
               StressUpdate& out) const override;
-  double density() const override { return density_; }
-  double reference_modulus() const override { return E_; }
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "linear_elastic"; }
 
  private:
-  double E_, nu_, density_, lambda_, mu_;
   Tensor4 elasticity_;
 };
 

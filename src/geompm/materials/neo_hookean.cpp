@@ -2,20 +2,9 @@
 
 #include <cmath>
 
-#include "geompm/materials/parameters.hpp"
-
 namespace geompm {
 
-NeoHookean::NeoHookean(double E, double nu, double density)
-    : E_(E), density_(density), lambda_(lame_lambda(E, nu)), mu_(shear_modulus(E, nu)) {}
-
-std::unique_ptr<Material> NeoHookean::create(const ParameterMap& p) {
-  ParameterReader r("neo_hookean", p, {"E", "nu", "density"});
-  return std::make_unique<NeoHookean>(ParameterReader::positive("E", r.required("E")),
-                                      ParameterReader::poisson_ratio("nu", r.required("nu")),
-                                      ParameterReader::non_negative("density",
-                                                                    r.optional("density", 0)));
-}
+NeoHookean::NeoHookean(double E, double nu, double density) : IsotropicElastic(E, nu, density) {}
 
 void NeoHookean::update(const Mat3& eps, const InternalVariables& internal_n,
                         StressUpdate& out) const {
@@ -26,9 +15,8 @@ void NeoHookean::update(const Mat3& eps, const InternalVariables& internal_n,
   out.elastic_strain = eps;
   out.internal = internal_n;
   // d tau / d eps = mu d exp(2 eps)/d eps + lambda I (x) I
-  out.tangent = mu_ * isotropic_function_derivative(e, exp2, [](double x) {
-                  return 2.0 * std::exp(2.0 * x);
-                }) +
+  out.tangent = mu_ * isotropic_function_derivative(
+                          e, exp2, [](double x) { return 2.0 * std::exp(2.0 * x); }) +
                 lambda_ * identity_dyad_identity4();
 }
 

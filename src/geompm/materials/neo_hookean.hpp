@@ -3,24 +3,19 @@
 // tau = mu (exp(2 eps) - I) + lambda tr(eps) I. Model name "neo_hookean".
 #pragma once
 
-#include "geompm/materials/material.hpp"
+#include "geompm/materials/isotropic_elastic.hpp"
 
 namespace geompm {
 
-class NeoHookean final : public Material {
+class NeoHookean final : public IsotropicElastic {
  public:
   NeoHookean(double youngs_modulus, double poisson_ratio, double density);
   static std::unique_ptr<Material> create(const ParameterMap& p);
 
   void update(const Mat3& trial_elastic_strain, const InternalVariables& internal_n,
               StressUpdate& out) const override;
-  double density() const override { return density_; }
-  double reference_modulus() const override { return E_; }
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "neo_hookean"; }
-
- private:
-  double E_, density_, lambda_, mu_;
 };
 
 }  // namespace geompm

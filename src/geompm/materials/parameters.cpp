@@ -30,8 +30,8 @@ ParameterReader::ParameterReader(const std::string& model, const ParameterMap& p
 double ParameterReader::required(const std::string& key) const {
   auto it = p_.find(key);
   if (it == p_.end())
-    throw ParameterError(key, fmt::format("material model '{}' needs the parameter '{}'",
-                                          model_, key));
+    throw ParameterError(key,
+                         fmt::format("material model '{}' needs the parameter '{}'", model_, key));
   return it->second;
 }
 

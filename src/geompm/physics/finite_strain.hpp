@@ -21,7 +21,7 @@ struct FiniteStrainState {
   Mat3 elastic_left_cauchy_green;  // b_e after the return mapping
   Mat3 cauchy_stress;              // sigma = tau / J
   InternalVariables internal{};
-  double jacobian = 1.0;    // J = det F
+  double jacobian = 1.0;  // J = det F
   // a above (only when requested), restricted to the requested components: entry (c, d) is
   // a_{ij kl} with (i, j) the c-th and (k, l) the d-th requested pair (all nine in natural
   // order by default).

@@ -12,7 +12,6 @@ namespace geompm {
 
 namespace {
 
-
 // A bubble over the reference cell: 1 at the centre, 0 on the cell boundary (DDMP blending).
 double cell_bubble(CellType type, const Vec3& xi) {
   switch (type) {
@@ -342,9 +341,12 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
 // ---------------------------------------------------------------------------------------------
 
 PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) const {
-  return {materials_[points.material[p]],        points.position[p],
-          points.volume[p],                      points.deformation_gradient[p],
-          points.elastic_left_cauchy_green[p], points.internal[p]};
+  return {materials_[points.material[p]],
+          points.position[p],
+          points.volume[p],
+          points.deformation_gradient[p],
+          points.elastic_left_cauchy_green[p],
+          points.internal[p]};
 }
 
 void GridSystem::store_trial(Index p, const FiniteStrainState& state, double volume) {

@@ -115,7 +115,8 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   out.internal_force.noalias() = out.volume * (B.transpose() * sigma);
 
   if (want_tangent) {
-    const Eigen::Matrix<double, nc, nc> A = out.state.spatial_tangent.template topLeftCorner<nc, nc>();
+    const Eigen::Matrix<double, nc, nc> A =
+        out.state.spatial_tangent.template topLeftCorner<nc, nc>();
     const Eigen::Matrix<double, nc, n_dofs> AB = A.lazyProduct(B);
     out.stiffness.noalias() = out.volume * B.transpose().lazyProduct(AB);
   }
