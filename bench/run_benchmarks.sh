@@ -31,6 +31,11 @@ build_type="$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt")"
 if [[ "$build_type" != "Release" ]]; then
   echo "warning: $build is a '$build_type' build; benchmark a Release build" >&2
 fi
+# The commit as it is built (the tree may change while the benchmarks run).
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+if [[ -n "$(git -C "$root" status --porcelain -- src 2>/dev/null)" ]]; then
+  commit="$commit (src/ modified)"
+fi
 cmake --build "$build" --target bench_step -j"$(nproc)"
 
 mkdir -p "$results"
@@ -43,5 +48,6 @@ load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 /usr/bin/python3 "$root/bench/make_performance_doc.py" "$json" "$doc" \
   --build-dir "$build" --load-after "$load_after" --wall-seconds $((end - start)) \
+  --commit "$commit" \
   --notes "$root/bench/performance_notes.md"
 echo "wrote $doc"

@@ -23,7 +23,8 @@ spec::Model block_under_gravity(int cells) {
 
   // A soil-like stiffness in kN, m, t: self-weight strains of about 1e-3, so Newton converges
   // in the few iterations a quasi-static soil step takes.
-  model.materials.push_back({"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}});
+  model.materials.push_back(
+      {"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}});
 
   spec::Body body;
   body.name = "block";
@@ -63,12 +64,14 @@ StepCase::StepCase(int cells) : cells_(cells) {
 void StepCase::map() {
   if (!grid_) {
     heap_before_grid_ = heap_in_use();
+    // The settings StepSolver derives from the model.
+    GridSettings settings;
+    settings.kinematics = model_->kinematics();
+    settings.empty_cell_modulus =
+        model_->spec.numerics.empty_cell_stiffness * model_->largest_modulus();
+    settings.buffer_layers = model_->spec.numerics.buffer_layers;
     grid_ = std::make_unique<GridSystem>(model_->mesh, model_->topology,
-                                         model_->material_pointers(), GridSettings{
-                                             model_->kinematics(),
-                                             model_->spec.numerics.empty_cell_stiffness *
-                                                 model_->largest_modulus(),
-                                             model_->spec.numerics.buffer_layers});
+                                         model_->material_pointers(), settings);
   }
   grid_->initialise(model_->points);
   f_ext_ = grid_->external_force(model_->points, phase_->gravity(1.0), {});
@@ -147,7 +150,8 @@ void StepCase::convect_and_relocate() {
     const auto N = grid_->shape_values(p);
     Vec3 destination = points.position[p];
     for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int i = 0; i < dim; ++i) destination(i) += N[a] * du_(node_to_active[nodes[a]] * dim + i);
+      for (int i = 0; i < dim; ++i)
+        destination(i) += N[a] * du_(node_to_active[nodes[a]] * dim + i);
     if (auto where = model_->locator->locate(destination, points.cell[p]))
       found[p] = *where;
     else
@@ -176,8 +180,8 @@ int StepCase::full_step() {
     step_ = std::make_unique<StepSolver>(*model_, *step_linear_solver_);
   }
   const StepResult result = step_->advance(*phase_, 0.0, 1.0);
-  if (!result.converged) throw std::runtime_error("benchmark step did not converge: " +
-                                                  result.newton.failure);
+  if (!result.converged)
+    throw std::runtime_error("benchmark step did not converge: " + result.newton.failure);
   return result.newton.iterations;
 }
 

@@ -5,7 +5,8 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev          # small dense tensors and the sparse matrix type
   libsuitesparse-dev     # UMFPACK sparse direct solver
-  libopenblas0-pthread   # optimised BLAS under UMFPACK (x2.5-7 on the factorisation, docs/performance.md)
+  libopenblas0-openmp    # optimised BLAS under UMFPACK (x2.5-7 on the factorisation, docs/performance.md);
+                         # the OpenMP build shares our threads instead of spinning its own
   libyaml-cpp-dev        # model files (YAML, with line numbers for errors)
   libmuparser-dev        # expressions of x, y, z, t in model files
   libcli11-dev           # command line
