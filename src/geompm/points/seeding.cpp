@@ -66,7 +66,6 @@ int integer_root(int n, int power) {
   return -1;
 }
 
-
 // |dX/dxi| (times the radius in axisymmetry) at xi: the volume density in reference space.
 template <class E>
 double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typename E::Local& xi,
