@@ -196,8 +196,14 @@ void GridSystem::empty_cell_stiffness_typed() {
   using GC = GradientComponents<dim>;
   constexpr int nc = GC::count;
   const Index n_active = static_cast<Index>(active_cells_.size());
-  empty_stiffness_.assign(std::size_t(n_active) * n * n, 0.0);
-  if (settings_.empty_cell_modulus <= 0.0) return;
+  // Stored only for the cells that get some (full cells are most of a body).
+  empty_offset_.assign(n_active, -1);
+  std::size_t stored = 0;
+  if (settings_.empty_cell_modulus > 0.0)
+    for (Index ci = 0; ci < n_active; ++ci)
+      if (1.0 - cell_fill_[ci] > 1e-9) empty_offset_[ci] = static_cast<std::int64_t>(stored++);
+  empty_stiffness_.assign(stored * n * n, 0.0);
+  if (stored == 0) return;
   const double E_empty = settings_.empty_cell_modulus, nu = 0.3;
   const Tensor4 C =
       isotropic_elasticity4(E_empty * nu / ((1 + nu) * (1 - 2 * nu)), E_empty / (2 * (1 + nu)));
@@ -209,11 +215,12 @@ void GridSystem::empty_cell_stiffness_typed() {
 #pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
     // Full cells whose point volumes sum to a hair below the cell's get none (round-off).
+    if (empty_offset_[ci] < 0) continue;
     const double weight = 1.0 - cell_fill_[ci];
-    if (weight <= 1e-9) continue;
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(mesh_, active_cells_[ci]).transpose();
-    Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() + std::size_t(ci) * n * n);
+    Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() +
+                                              std::size_t(empty_offset_[ci]) * n * n);
     for (int q = 0; q < E::quadrature_size(); ++q) {
       const auto xi = E::quadrature_point(q);
       const auto s = make_stencil<E>(X, xi);
@@ -411,10 +418,14 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         for (int i = 0; i < dim; ++i)
           du_flat(a * dim + i) = du_local(a, i) = du(node_to_active_[nodes[a]] * dim + i);
 
-      const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(empty_stiffness_.data() +
-                                                                  std::size_t(ci) * n * n);
-      Eigen::Matrix<double, n, 1> f_cell = K_empty * du_flat;
-      Eigen::Matrix<double, n, n> K_cell = K_empty;
+      Eigen::Matrix<double, n, 1> f_cell = Eigen::Matrix<double, n, 1>::Zero();
+      Eigen::Matrix<double, n, n> K_cell = Eigen::Matrix<double, n, n>::Zero();
+      if (empty_offset_[ci] >= 0) {
+        const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(
+            empty_stiffness_.data() + std::size_t(empty_offset_[ci]) * n * n);
+        f_cell.noalias() = K_empty * du_flat;
+        K_cell = K_empty;
+      }
 
       PointKernelResult<E> r;
       PointStencil<E> s;

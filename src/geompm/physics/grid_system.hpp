@@ -150,7 +150,8 @@ class GridSystem {
   std::vector<unsigned char> target_mask_;
   std::vector<Vec3> point_reaction_;
 
-  std::vector<double> empty_stiffness_;  // (nen*dim)^2 per active cell, scaled by (1 - fill)
+  std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
+  std::vector<double> empty_stiffness_;     // (nen*dim)^2 per cell with (1 - fill) > 0
 
   Index num_free_ = 0;
   std::vector<Index> free_index_;
