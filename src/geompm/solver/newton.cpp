@@ -26,7 +26,19 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       return result;
     }
     const bool residual_ok = relative <= settings.residual_tolerance || norm == 0.0;
-    const bool correction_ok = k == 0 || last_correction <= settings.displacement_tolerance;
+    bool correction_ok = k == 0 || last_correction <= settings.displacement_tolerance;
+    if (residual_ok && !correction_ok) {
+      // The residual has converged but the last correction was still large (it answered the
+      // previous, larger residual). The correction the current residual asks for is measured
+      // with the factorisation already at hand (one back-substitution, no new factorisation):
+      // near the solution it differs from the full Newton correction by a higher-order term.
+      try {
+        const double scale = problem.increment_norm(x);
+        const double estimate = scale > 0 ? solver.solve(residual).norm() / scale : 0.0;
+        correction_ok = estimate <= settings.displacement_tolerance;
+      } catch (const LinearSolverFailure&) {
+      }
+    }
     if (residual_ok && correction_ok) {
       result.converged = true;
       return result;
