@@ -3,12 +3,32 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <random>
 
 #include "geompm/materials/material.hpp"
+#include "geompm/materials/mohr_coulomb.hpp"
 #include "geompm/materials/principal_return.hpp"
 
 namespace geompm::test_support {
+
+/// A Mohr-Coulomb soil; the tension cut-off is `cutoff` when given (>= 0), otherwise at the apex
+/// c / tan(phi) (none for phi = 0).
+inline MohrCoulomb make_mohr_coulomb(double c, double phi, double psi, double E, double nu,
+                                     double cutoff = -1) {
+  MohrCoulomb::Parameters p;
+  p.cohesion = c;
+  p.friction_angle = phi;
+  p.dilation_angle = psi;
+  p.youngs_modulus = E;
+  p.poisson_ratio = nu;
+  const double apex = phi > 0 ? c / std::tan(phi * M_PI / 180) : 0;
+  if (phi > 0 || cutoff >= 0) {
+    p.has_tension_cutoff = true;
+    p.tension_cutoff = cutoff >= 0 ? cutoff : apex;
+  }
+  return MohrCoulomb(p);
+}
 
 /// A uniformly random rotation (det +1), or with `reflect` an improper one (det -1).
 inline Mat3 random_rotation(std::mt19937& rng, bool reflect = false) {

@@ -11,6 +11,7 @@
 #include "geompm/materials/parameters.hpp"
 #include "geompm/materials/single_point_driver.hpp"
 #include "geompm/materials/tresca.hpp"
+#include "material_test_support.hpp"
 
 namespace geompm {
 namespace {
@@ -44,18 +45,6 @@ Tresca make_clay(double su, double E, double nu) {
   p.poisson_ratio = nu;
   p.strength = su;
   return Tresca(p);
-}
-
-MohrCoulomb make_sand(double c, double phi, double psi, double E, double nu) {
-  MohrCoulomb::Parameters p;
-  p.cohesion = c;
-  p.friction_angle = phi;
-  p.dilation_angle = psi;
-  p.youngs_modulus = E;
-  p.poisson_ratio = nu;
-  p.has_tension_cutoff = true;
-  p.tension_cutoff = c / std::tan(phi * deg);
-  return MohrCoulomb(p);
 }
 
 // The driver itself: uniaxial stress on a linear elastic (Hencky) material, tau_zz = E eps_zz and
@@ -154,7 +143,7 @@ TEST(ElementTests, MohrCoulombDrainedTriaxialCompression) {
     for (double p0 : {20.0, 100.0, 300.0}) {
       const double sf = std::sin(phi * deg), sd = std::sin(psi * deg);
       const double q_f = 2 * (c * std::cos(phi * deg) + p0 * sf) / (1 - sf);
-      const MohrCoulomb sand = make_sand(c, phi, psi, E, nu);
+      const MohrCoulomb sand = test_support::make_mohr_coulomb(c, phi, psi, E, nu);
       SinglePointDriver driver(sand);
       driver.follow(isotropic(p0));
       const auto history = driver.follow(drained_triaxial(-0.2, p0, 400));
@@ -179,7 +168,7 @@ TEST(ElementTests, MohrCoulombDrainedTriaxialExtension) {
   const double c = 5, phi = 30, psi = 10, E = 1e4, nu = 0.3, p0 = 100;
   const double sf = std::sin(phi * deg);
   const double q_e = 2 * (c * std::cos(phi * deg) + p0 * sf) / (1 + sf);
-  const MohrCoulomb sand = make_sand(c, phi, psi, E, nu);
+  const MohrCoulomb sand = test_support::make_mohr_coulomb(c, phi, psi, E, nu);
   SinglePointDriver driver(sand);
   driver.follow(isotropic(p0));
   driver.follow(drained_triaxial(0.03, p0, 150));
@@ -191,7 +180,7 @@ TEST(ElementTests, MohrCoulombDrainedTriaxialExtension) {
 // in the middle: main plane). f = 2 tau_xy - 2 c cos phi = 0:   tau_f = c cos phi.
 TEST(ElementTests, MohrCoulombConstrainedSimpleShearAtZeroMeanStress) {
   const double c = 8, phi = 25, E = 1e4, nu = 0.3, G = shear_modulus(E, nu);
-  const MohrCoulomb sand = make_sand(c, phi, 0.0, E, nu);
+  const MohrCoulomb sand = test_support::make_mohr_coulomb(c, phi, 0.0, E, nu);
   SinglePointDriver driver(sand);
   PathSegment s;
   s.strain_increment(xy) = 0.01;
@@ -217,7 +206,7 @@ TEST(ElementTests, MohrCoulombSimpleShearUnderConstantVerticalStress) {
     const double sf = std::sin(phi * deg), sd = std::sin(psi * deg);
     const double tau_f =
         std::cos(psi * deg) * (c * std::cos(phi * deg) + sigma_n * sf) / (1 - sf * sd);
-    const MohrCoulomb sand = make_sand(c, phi, psi, E, nu);
+    const MohrCoulomb sand = test_support::make_mohr_coulomb(c, phi, psi, E, nu);
     SinglePointDriver driver(sand);
     driver.follow(isotropic(sigma_n));
     PathSegment s;

@@ -23,18 +23,7 @@ using namespace geompm::test_support;
 constexpr double c = 10.0, E = 1e4, nu = 0.3;
 
 MohrCoulomb make_soil(double phi, double psi, double cutoff = -1) {
-  MohrCoulomb::Parameters p;
-  p.cohesion = c;
-  p.friction_angle = phi;
-  p.dilation_angle = psi;
-  p.youngs_modulus = E;
-  p.poisson_ratio = nu;
-  const double apex = phi > 0 ? c / std::tan(phi * std::numbers::pi / 180) : 0;
-  if (phi > 0 || cutoff >= 0) {
-    p.has_tension_cutoff = true;
-    p.tension_cutoff = cutoff >= 0 ? cutoff : apex;
-  }
-  return MohrCoulomb(p);
+  return make_mohr_coulomb(c, phi, psi, E, nu, cutoff);
 }
 
 const Mat3 de = principal_elasticity(lame_lambda(E, nu), shear_modulus(E, nu));
