@@ -166,9 +166,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.max_iterations = phase.spec->newton.max_iterations;
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
-  Vector x = Vector::Zero(grid_.num_free());
-  for (Index d = 0; d < n_dofs; ++d)
-    if (grid_.free_index()[d] >= 0) x(grid_.free_index()[d]) = du(d);
+  Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
   result.newton = solve_newton(problem, solver_, settings, x, tangent_);
   if (!result.newton.converged) return result;
   result.converged = true;
