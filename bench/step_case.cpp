@@ -24,7 +24,7 @@ spec::Model block_under_gravity(int cells) {
   // A soil-like stiffness in kN, m, t: self-weight strains of about 1e-3, so Newton converges
   // in the few iterations a quasi-static soil step takes.
   model.materials.push_back(
-      {"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}});
+      {"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}, {}});
 
   spec::Body body;
   body.name = "block";

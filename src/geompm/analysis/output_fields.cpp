@@ -51,6 +51,13 @@ void grid_fields(const Model& model, const GridSystem& grid, const StepResult& s
   node_fields.vectors.emplace_back("velocity", std::move(velocity));
   node_fields.vectors.emplace_back("step_displacement", std::move(displacement));
   node_fields.scalars.emplace_back("mass", std::move(mass));
+  if (grid.mixed()) {
+    // The pressure unknowns of the mixed formulation (compression positive; theory eq. 9.6).
+    std::vector<double> pressure(n_nodes, 0.0);
+    const Vector p = grid.nodal_pressure(step.displacement);
+    for (Index a = 0; a < static_cast<Index>(active.size()); ++a) pressure[active[a]] = p(a);
+    node_fields.scalars.emplace_back("pressure", std::move(pressure));
+  }
 
   std::vector<Index> is_active(model.mesh.num_cells(), 0);
   std::vector<double> fill(model.mesh.num_cells(), 0.0);

@@ -14,6 +14,9 @@ GridSettings grid_settings(const Model& model) {
   s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * model.largest_modulus();
   s.buffer_layers = model.spec.numerics.buffer_layers;
   s.dual_domain = model.spec.numerics.interpolation == spec::Interpolation::DualDomain;
+  for (const auto& material : model.spec.materials)
+    s.mixed.push_back(material.formulation.value_or(model.spec.numerics.formulation) ==
+                      spec::Formulation::Mixed);
   return s;
 }
 

@@ -106,6 +106,11 @@ spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory,
   return mesh;
 }
 
+spec::Formulation read_formulation(const yaml::Node& node) {
+  return node.choice({"displacement", "mixed"}) == "mixed" ? spec::Formulation::Mixed
+                                                           : spec::Formulation::Displacement;
+}
+
 std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context) {
   std::vector<spec::Material> materials;
   for (const auto& [name, material_node] : node.entries()) {
@@ -113,12 +118,14 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
     material.name = name;
     material.source = material_node.where();
     if (name.empty()) material_node.fail("a material needs a name");
-    // Every key but "model" is a parameter; which ones the model takes, and their ranges, are the
-    // material's own business (create_material), so the reader asks it.
+    // Every key but "model" and "formulation" is a parameter; which ones the model takes, and
+    // their ranges, are the material's own business (create_material), so the reader asks it.
     const std::vector<std::pair<std::string, yaml::Node>> entries = material_node.entries();
     for (const auto& [key, value] : entries) {
       if (key == "model")
         material.model = value.text();
+      else if (key == "formulation")
+        material.formulation = read_formulation(value);
       else
         material.parameters[key] = value.number();
     }
@@ -152,9 +159,11 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section = node.map(
-      {"interpolation", "empty_cell_stiffness", "buffer_layers", "lost_points", "linear_solver"});
+  const yaml::Map section = node.map({"interpolation", "formulation", "empty_cell_stiffness",
+                                      "buffer_layers", "lost_points", "linear_solver"});
   spec::Numerics numerics;
+  if (auto formulation = section.find("formulation"))
+    numerics.formulation = read_formulation(*formulation);
   if (auto interpolation = section.find("interpolation"))
     numerics.interpolation = interpolation->choice({"standard", "ddmp"}) == "ddmp"
                                  ? spec::Interpolation::DualDomain

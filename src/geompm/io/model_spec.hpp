@@ -22,10 +22,16 @@ struct Mesh {
   SourceLocation source;
 };
 
+/// How the stress of a material's points enters equilibrium: from the displacements alone, or
+/// with its mean stress replaced by an independent pressure field (mixed p-u, docs/theory.md
+/// §9) so that nearly incompressible (undrained) soil does not lock.
+enum class Formulation { Displacement, Mixed };
+
 struct Material {
   std::string name;
   std::string model;                         // registered name, e.g. "linear_elastic"
   std::map<std::string, double> parameters;  // E, nu, density, ...
+  std::optional<Formulation> formulation;    // numerics.formulation when not given
   SourceLocation source;
 };
 
@@ -160,8 +166,9 @@ enum class Interpolation { Standard, DualDomain };
 
 struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
-  double empty_cell_stiffness = 1e-6;  // relative to the largest Young's modulus
-  int buffer_layers = 1;               // layers of empty cells kept active around the body
+  Formulation formulation = Formulation::Displacement;  // default of the materials
+  double empty_cell_stiffness = 1e-6;                   // relative to the largest Young's modulus
+  int buffer_layers = 1;  // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
 };

@@ -12,6 +12,9 @@ class IsotropicElastic : public Material {
 
   double density() const override { return density_; }
   double reference_modulus() const override { return E_; }
+  ElasticModuli elastic_moduli(const InternalVariables&) const override {
+    return {lambda_ + 2.0 * mu_ / 3.0, mu_};
+  }
 
  protected:
   /// Reads E (> 0), nu (in (-1, 0.5)) and density (>= 0, default 0) of `model`.

@@ -26,6 +26,12 @@ struct StressUpdate {
   Tensor4 tangent;  // d tau / d eps_tr, index (3i+j, 3k+l)
 };
 
+/// Elastic moduli of a point, for the mixed formulation's weights (docs/theory.md §9).
+struct ElasticModuli {
+  double bulk = 0.0;
+  double shear = 0.0;
+};
+
 class Material {
  public:
   virtual ~Material() = default;
@@ -37,6 +43,8 @@ class Material {
   virtual double density() const = 0;
   /// A Young's modulus that stands for the material's stiffness (empty-cell stiffness scale).
   virtual double reference_modulus() const = 0;
+  /// The point's elastic bulk and shear moduli (its own values where they vary in space).
+  virtual ElasticModuli elastic_moduli(const InternalVariables& internal) const = 0;
   /// Stored energy per unit reference volume at elastic strain eps (for energy histories).
   virtual double strain_energy(const Mat3& elastic_strain) const = 0;
   virtual const char* model_name() const = 0;

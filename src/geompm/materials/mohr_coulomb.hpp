@@ -53,6 +53,9 @@ class MohrCoulomb final : public Material {
               StressUpdate& out) const override;
   double density() const override { return p_.density; }
   double reference_modulus() const override { return p_.youngs_modulus; }
+  ElasticModuli elastic_moduli(const InternalVariables&) const override {
+    return {lambda_ + 2.0 * mu_ / 3.0, mu_};
+  }
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "mohr_coulomb"; }
   int internal_variable_count() const override { return 2; }

@@ -90,6 +90,11 @@ std::array<double, 2> Tresca::point_strength_and_modulus(const InternalVariables
 
 double Tresca::reference_modulus() const { return point_strength_and_modulus({})[1]; }
 
+ElasticModuli Tresca::elastic_moduli(const InternalVariables& internal) const {
+  const double E = point_strength_and_modulus(internal)[1], nu = p_.poisson_ratio;
+  return {E / (3.0 * (1.0 - 2.0 * nu)), shear_modulus(E, nu)};
+}
+
 double Tresca::strain_energy(const Mat3& eps) const {
   const double E = reference_modulus();
   const double lambda = lame_lambda(E, p_.poisson_ratio), mu = shear_modulus(E, p_.poisson_ratio);

@@ -53,6 +53,8 @@ class Tresca final : public Material {
   double density() const override { return p_.density; }
   /// The modulus at the reference level (at the su_min floor if that is higher).
   double reference_modulus() const override;
+  /// With the point's own modulus.
+  ElasticModuli elastic_moduli(const InternalVariables& internal) const override;
   /// Elastic energy with the reference-level modulus (the interface passes no point state).
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "tresca"; }

@@ -6,6 +6,7 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/physics/mixed_point_kernel.hpp"
 #include "geompm/physics/point_kernel.hpp"
 
 namespace geompm {
@@ -37,7 +38,10 @@ GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
       materials_(materials),
       settings_(settings),
       dim_(mesh.dim()),
-      nen_(mesh.nodes_per_cell()) {}
+      nen_(mesh.nodes_per_cell()) {
+  settings_.mixed.resize(materials_.size(), 0);
+  mixed_ = std::any_of(settings_.mixed.begin(), settings_.mixed.end(), [](char m) { return m; });
+}
 
 // ---------------------------------------------------------------------------------------------
 // Phase 1: initialise
@@ -109,6 +113,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   shape_.assign(std::size_t(n_points) * nen, 0.0);
   gradients_.assign(std::size_t(n_points) * nen * dim, 0.0);
   cell_fill_.assign(n_active, 0.0);
+  cell_mixed_fill_.assign(n_active, 0.0);
   cell_size_.assign(n_points, 0.0);
   target_stiffness_.clear();
   point_reaction_.clear();
@@ -118,15 +123,18 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     const Index c = active_cells_[ci];
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(mesh_, c).transpose();
-    double occupied = 0.0;
+    double occupied = 0.0, occupied_mixed = 0.0;
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
       Eigen::Map<typename E::Values>(shape_.data() + std::size_t(p) * nen) = s.N;
       Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() + std::size_t(p) * nen * dim) =
           s.dN_dX;
       occupied += points.volume[p];
+      if (is_mixed(points, p)) occupied_mixed += points.volume[p];
     }
-    cell_fill_[ci] = std::min(1.0, occupied / cell_measure(mesh_, c, radial));
+    const double measure = cell_measure(mesh_, c, radial);
+    cell_fill_[ci] = std::min(1.0, occupied / measure);
+    cell_mixed_fill_[ci] = std::min(1.0, occupied_mixed / measure);
     const double size = std::pow(cell_measure(mesh_, c, false), 1.0 / dim);
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
   }
@@ -158,6 +166,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     }
   }
 
+  if (mixed_) initialise_pressure(points);
   empty_cell_stiffness_typed<E>();
   if (settings_.dual_domain) build_dual_domain_stencils<E>(points);
 
@@ -166,6 +175,43 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   trial_.be.resize(n_points);
   trial_.internal.resize(n_points);
   trial_.volume.resize(n_points);
+}
+
+void GridSystem::initialise_pressure(const MaterialPoints& points) {
+  // The scales of the pressure unknowns (theory eq. 9.6) from the stiffest mixed soil of the
+  // step, and the start value of the nodal pressures: the points' pressures (from the total
+  // stress they carry) averaged onto the nodes with weights N v, so that Newton starts from the
+  // last converged pressure field instead of from zero.
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  double shear = 0.0, bulk = 0.0, size = 0.0;
+  Index count = 0;
+  pressure_start_ = Vector::Zero(n_nodes);
+  Vector weight = Vector::Zero(n_nodes);
+  for (Index p = 0; p < points.size(); ++p) {
+    if (!is_mixed(points, p)) continue;
+    const ElasticModuli moduli = materials_[points.material[p]]->elastic_moduli(points.internal[p]);
+    shear = std::max(shear, moduli.shear);
+    bulk = std::max(bulk, moduli.bulk);
+    size += cell_size_[p];
+    ++count;
+    const double pressure = -points.stress[p].trace() / 3.0;
+    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    for (int a = 0; a < nen_; ++a) {
+      const double w = shape_[std::size_t(p) * nen_ + a] * points.volume[p];
+      weight(node_to_active_[nodes[a]]) += w;
+      pressure_start_(node_to_active_[nodes[a]]) += w * pressure;
+    }
+  }
+  for (Index a = 0; a < n_nodes; ++a)
+    if (weight(a) > 0.0) pressure_start_(a) /= weight(a);
+  pressure_scale_ = count > 0 ? shear / (size / count) : 1.0;
+  reference_bulk_ = count > 0 ? bulk : 1.0;
+}
+
+Vector GridSystem::nodal_pressure(const Vector& x) const {
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  if (!mixed_) return Vector::Zero(n_nodes);
+  return pressure_start_ + pressure_scale_ * x.segment(pressure_dof(0), n_nodes);
 }
 
 void GridSystem::colour_active_cells() {
@@ -192,17 +238,27 @@ void GridSystem::empty_cell_stiffness_typed() {
   // A small linear elastic stiffness in empty and partly filled cells keeps the system regular
   // (seed §3.2). It is scaled by the empty fraction (1 - fill) of the cell, so full cells get
   // none and it fades in as a cell empties. Small strain on the grid of the step, nu = 0.3.
+  // In a mixed system the pressure unknowns of empty space need the same: the pressure block a
+  // full cell of the stiffest mixed soil would have (v N N^T / K, eq. 9.2), scaled by the
+  // fraction of the cell not covered by mixed points (theory eq. 9.7). Like the displacement
+  // part it acts on the change over the step, holding it as weakly as the soil's own
+  // compressibility would.
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
   using GC = GradientComponents<dim>;
   constexpr int nc = GC::count;
+  const int m = cell_dofs();
   const Index n_active = static_cast<Index>(active_cells_.size());
   // Stored only for the cells that get some (full cells are most of a body).
   empty_offset_.assign(n_active, -1);
   std::size_t stored = 0;
-  if (settings_.empty_cell_modulus > 0.0)
-    for (Index ci = 0; ci < n_active; ++ci)
-      if (1.0 - cell_fill_[ci] > 1e-9) empty_offset_[ci] = static_cast<std::int64_t>(stored++);
-  empty_stiffness_.assign(stored * n * n, 0.0);
+  const auto displacement_weight = [&](Index ci) {
+    return settings_.empty_cell_modulus > 0.0 ? 1.0 - cell_fill_[ci] : 0.0;
+  };
+  const auto pressure_weight = [&](Index ci) { return mixed_ ? 1.0 - cell_mixed_fill_[ci] : 0.0; };
+  for (Index ci = 0; ci < n_active; ++ci)
+    if (displacement_weight(ci) > 1e-9 || pressure_weight(ci) > 1e-9)
+      empty_offset_[ci] = static_cast<std::int64_t>(stored++);
+  empty_stiffness_.assign(stored * m * m, 0.0);
   if (stored == 0) return;
   const double E_empty = settings_.empty_cell_modulus, nu = 0.3;
   const Tensor4 C =
@@ -211,16 +267,18 @@ void GridSystem::empty_cell_stiffness_typed() {
   for (int c = 0; c < nc; ++c)
     for (int d = 0; d < nc; ++d)
       A(c, d) = C(pair_index(GC::row[c], GC::col[c]), pair_index(GC::row[d], GC::col[d]));
+  const double pressure_factor = pressure_scale_ * pressure_scale_ / reference_bulk_;
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
 #pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
     // Full cells whose point volumes sum to a hair below the cell's get none (round-off).
     if (empty_offset_[ci] < 0) continue;
-    const double weight = 1.0 - cell_fill_[ci];
+    const double w_u = displacement_weight(ci) > 1e-9 ? displacement_weight(ci) : 0.0;
+    const double w_p = pressure_weight(ci) > 1e-9 ? pressure_weight(ci) : 0.0;
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(mesh_, active_cells_[ci]).transpose();
-    Eigen::Map<Eigen::Matrix<double, n, n>> K(empty_stiffness_.data() +
-                                              std::size_t(empty_offset_[ci]) * n * n);
+    Eigen::Map<Eigen::MatrixXd> K(empty_stiffness_.data() + std::size_t(empty_offset_[ci]) * m * m,
+                                  m, m);
     for (int q = 0; q < E::quadrature_size(); ++q) {
       const auto xi = E::quadrature_point(q);
       const auto s = make_stencil<E>(X, xi);
@@ -235,7 +293,10 @@ void GridSystem::empty_cell_stiffness_typed() {
             B(c, a * dim + GC::row[c]) = s.dN_dX(a, GC::col[c]);
       if (axisymmetric)
         for (int a = 0; a < nen; ++a) B(nc - 1, a * dim) = s.N(a) / r;
-      K.noalias() += weight * dv * (B.transpose() * A * B);
+      if (w_u > 0.0) K.topLeftCorner(n, n).noalias() += w_u * dv * (B.transpose() * A * B);
+      if (w_p > 0.0)
+        K.bottomRightCorner(m - n, m - n).noalias() +=
+            (w_p * dv * pressure_factor) * (s.N * s.N.transpose());
     }
   }
 }
@@ -297,23 +358,29 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
       for (Index a = stencil_start_[p]; a < stencil_start_[p + 1]; ++a)
         for (Index b = stencil_start_[p]; b < stencil_start_[p + 1]; ++b)
           neighbours[stencil_nodes_[a]].push_back(stencil_nodes_[b]);
-  std::vector<int> outer(num_free_ + 1, 0);
-  std::vector<int> inner;
-  for (Index a = 0; a < n_nodes; ++a) {
-    auto& list = neighbours[a];
+  for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
-    for (int i = 0; i < dim_; ++i) {
-      const Index col = free_index_[a * dim_ + i];
-      if (col < 0) continue;
-      for (Index b : list)
-        for (int k = 0; k < dim_; ++k) {
-          const Index row = free_index_[b * dim_ + k];
-          if (row >= 0) inner.push_back(row);
-        }
-      outer[col + 1] = static_cast<int>(inner.size());
-    }
   }
+  // Columns in the order of their free index: the displacements of all nodes, then (mixed) the
+  // pressures; in each column the displacement rows, then the pressure rows, both ascending.
+  std::vector<int> outer(num_free_ + 1, 0);
+  std::vector<int> inner;
+  const auto add_column = [&](Index a, Index dof) {
+    const Index col = free_index_[dof];
+    if (col < 0) return;
+    for (Index b : neighbours[a])
+      for (int k = 0; k < dim_; ++k)
+        if (const Index row = free_index_[b * dim_ + k]; row >= 0) inner.push_back(row);
+    if (mixed_)
+      for (Index b : neighbours[a])
+        if (const Index row = free_index_[pressure_dof(b)]; row >= 0) inner.push_back(row);
+    outer[col + 1] = static_cast<int>(inner.size());
+  };
+  for (Index a = 0; a < n_nodes; ++a)
+    for (int i = 0; i < dim_; ++i) add_column(a, a * dim_ + i);
+  if (mixed_)
+    for (Index a = 0; a < n_nodes; ++a) add_column(a, pressure_dof(a));
   pattern_ = SparseMatrix(num_free_, num_free_);
   pattern_.resizeNonZeros(static_cast<Index>(inner.size()));
   std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
@@ -321,22 +388,24 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
   std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
 
   // Scatter maps: local (row, column) of each active cell -> position in the values array.
-  const int n = nen_ * dim_;
+  const int m = cell_dofs();
   const Index n_active = static_cast<Index>(active_cells_.size());
-  scatter_.assign(std::size_t(n_active) * n * n, -1);
+  scatter_.assign(std::size_t(n_active) * m * m, -1);
 #pragma omp parallel for schedule(dynamic, 64) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
     const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
-    for (int lc = 0; lc < n; ++lc) {
-      const Index col = free_index_[node_to_active_[nodes[lc / dim_]] * dim_ + lc % dim_];
+    std::array<Index, 27> active{};
+    for (int a = 0; a < nen_; ++a) active[a] = node_to_active_[nodes[a]];
+    for (int lc = 0; lc < m; ++lc) {
+      const Index col = free_index_[local_dof(active, nen_, lc)];
       if (col < 0) continue;
       const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
       const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
-      for (int lr = 0; lr < n; ++lr) {
-        const Index row = free_index_[node_to_active_[nodes[lr / dim_]] * dim_ + lr % dim_];
+      for (int lr = 0; lr < m; ++lr) {
+        const Index row = free_index_[local_dof(active, nen_, lr)];
         if (row < 0) continue;
         const int* at = std::lower_bound(begin, end, row);
-        scatter_[(std::size_t(ci) * n + lc) * n + lr] =
+        scatter_[(std::size_t(ci) * m + lc) * m + lr] =
             static_cast<int>(at - pattern_.innerIndexPtr());
       }
     }
@@ -367,7 +436,9 @@ void GridSystem::store_trial(Index p, const FiniteStrainState& state, double vol
 bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                 SparseMatrix* tangent) {
   return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
-    return internal_force_typed<decltype(e)>(points, du, f_int, tangent);
+    using E = decltype(e);
+    return mixed_ ? internal_force_typed<E, true>(points, du, f_int, tangent)
+                  : internal_force_typed<E, false>(points, du, f_int, tangent);
   });
 }
 
@@ -395,9 +466,38 @@ void GridSystem::add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& 
 }
 
 template <class E>
+void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
+                                        Eigen::Matrix<double, E::nodes, E::nodes>& S) const {
+  // Polynomial pressure projection (Dohrmann & Bochev 2004; theory eq. 9.5): the pressure's
+  // departure from its mean over the cell, p - Pi p, is penalised with 1/G,
+  //   S = sum_p (v_p / G_p) (N_p - m)(N_p - m)^T,   m = sum_p v_p N_p / sum_p v_p,
+  // over the cell's mixed points with their start-of-step volumes (so S does not depend on the
+  // unknowns). It removes the checkerboard modes equal-order u-p cells allow and vanishes for a
+  // pressure constant over the cell.
+  constexpr int nen = E::nodes;
+  using Values = Eigen::Matrix<double, nen, 1>;
+  S.setZero();
+  Values mean = Values::Zero();
+  double volume = 0.0;
+  for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
+    if (is_mixed(points, p)) {
+      mean += points.volume[p] * Eigen::Map<const Values>(shape_.data() + std::size_t(p) * nen);
+      volume += points.volume[p];
+    }
+  if (volume <= 0.0) return;
+  mean /= volume;
+  for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
+    if (is_mixed(points, p)) {
+      const double shear = materials_[points.material[p]]->elastic_moduli(points.internal[p]).shear;
+      const Values d = Eigen::Map<const Values>(shape_.data() + std::size_t(p) * nen) - mean;
+      S.noalias() += (points.volume[p] / shear) * (d * d.transpose());
+    }
+}
+
+template <class E, bool Mixed>
 bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                       SparseMatrix* tangent) {
-  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
+  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim, m = n + (Mixed ? nen : 0);
   f_int = Vector::Zero(num_dofs());
   if (tangent) {
     if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows())
@@ -405,6 +505,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
     std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
   }
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  const double s_p = pressure_scale_;
   std::atomic<bool> admissible{true};
   for (const auto& colour : colours_) {
     const Index count = static_cast<Index>(colour.size());
@@ -412,48 +513,79 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
     for (Index k = 0; k < count; ++k) {
       const Index ci = colour[k];
       const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
+      std::array<Index, nen> active;
+      for (int a = 0; a < nen; ++a) active[a] = node_to_active_[nodes[a]];
       Eigen::Matrix<double, nen, dim> du_local;
-      Eigen::Matrix<double, n, 1> du_flat;
-      for (int a = 0; a < nen; ++a)
-        for (int i = 0; i < dim; ++i)
-          du_flat(a * dim + i) = du_local(a, i) = du(node_to_active_[nodes[a]] * dim + i);
+      Eigen::Matrix<double, m, 1> x_flat;  // the cell's unknowns, local order (local_dof)
+      for (int l = 0; l < m; ++l) x_flat(l) = du(local_dof(active, nen, l));
+      for (int a = 0; a < nen; ++a) du_local.row(a) = x_flat.template segment<dim>(a * dim);
+      Eigen::Matrix<double, nen, 1> p_local;  // nodal pressures (eq. 9.6)
+      if constexpr (Mixed)
+        for (int a = 0; a < nen; ++a) p_local(a) = pressure_start_(active[a]) + s_p * x_flat(n + a);
 
-      Eigen::Matrix<double, n, 1> f_cell = Eigen::Matrix<double, n, 1>::Zero();
-      Eigen::Matrix<double, n, n> K_cell = Eigen::Matrix<double, n, n>::Zero();
+      Eigen::Matrix<double, m, 1> f_cell = Eigen::Matrix<double, m, 1>::Zero();
+      Eigen::Matrix<double, m, m> K_cell = Eigen::Matrix<double, m, m>::Zero();
       if (empty_offset_[ci] >= 0) {
-        const Eigen::Map<const Eigen::Matrix<double, n, n>> K_empty(
-            empty_stiffness_.data() + std::size_t(empty_offset_[ci]) * n * n);
-        f_cell.noalias() = K_empty * du_flat;
+        const Eigen::Map<const Eigen::Matrix<double, m, m>> K_empty(
+            empty_stiffness_.data() + std::size_t(empty_offset_[ci]) * m * m);
+        f_cell.noalias() = K_empty * x_flat;
         K_cell = K_empty;
       }
+      if constexpr (Mixed) {
+        Eigen::Matrix<double, nen, nen> S;
+        pressure_stabilisation<E>(points, ci, S);
+        f_cell.template tail<nen>().noalias() += s_p * (S * p_local);
+        K_cell.template bottomRightCorner<nen, nen>() += (s_p * s_p) * S;
+      }
 
-      PointKernelResult<E> r;
       PointStencil<E> s;
+      PointKernelResult<E> r;
+      [[maybe_unused]] MixedKernelResult<E::nodes, E::dim> rm;
       const Index point_end = settings_.dual_domain ? cell_point_begin_[ci] : cell_point_end_[ci];
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
                                                                     std::size_t(p) * nen * dim);
         const PointStartState start = start_state(points, p);
+        if constexpr (Mixed) {
+          if (is_mixed(points, p)) {
+            if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric,
+                                       tangent != nullptr, rm)) {
+              admissible = false;
+              continue;
+            }
+            f_cell.template head<n>() += rm.u.internal_force;
+            f_cell.template tail<nen>() += s_p * rm.pressure_residual;
+            if (tangent) {
+              K_cell.template topLeftCorner<n, n>() += rm.u.stiffness;
+              K_cell.template topRightCorner<n, nen>() += s_p * rm.K_up;
+              K_cell.template bottomLeftCorner<nen, n>() += s_p * rm.K_pu;
+              K_cell.template bottomRightCorner<nen, nen>() += (s_p * s_p) * rm.K_pp;
+            }
+            if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+              add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
+            store_trial(p, rm.u.state, rm.u.volume);
+            trial_.stress[p] = rm.total_stress;
+            continue;
+          }
+        }
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
           admissible = false;
           continue;
         }
-        f_cell += r.internal_force;
-        if (tangent) K_cell += r.stiffness;
+        f_cell.template head<n>() += r.internal_force;
+        if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
         if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
           add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
         store_trial(p, r.state, r.volume);
       }
-      for (int a = 0; a < nen; ++a)
-        for (int i = 0; i < dim; ++i)
-          f_int(node_to_active_[nodes[a]] * dim + i) += f_cell(a * dim + i);
+      for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
       if (tangent) {
-        const int* map = scatter_.data() + std::size_t(ci) * n * n;
+        const int* map = scatter_.data() + std::size_t(ci) * m * m;
         double* values = tangent->valuePtr();
-        for (int lc = 0; lc < n; ++lc)
-          for (int lr = 0; lr < n; ++lr) {
-            const int at = map[lc * n + lr];
+        for (int lc = 0; lc < m; ++lc)
+          for (int lr = 0; lr < m; ++lr) {
+            const int at = map[lc * m + lr];
             if (at >= 0) values[at] += K_cell(lr, lc);
           }
       }
@@ -558,41 +690,70 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
   Dynamic s;
   KernelResult<Eigen::Dynamic, Dim> r;
+  MixedKernelResult<Eigen::Dynamic, Dim> rm;
   Eigen::Matrix<double, Eigen::Dynamic, Dim> du_local;
+  Eigen::VectorXd p_local, f_local;
+  Eigen::MatrixXd K_local;
+  std::vector<Index> dofs;
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
   for (Index p = 0; p < points.size(); ++p) {
     const Index begin = stencil_start_[p], ns = stencil_start_[p + 1] - begin;
+    const auto stencil = stencil_nodes_.begin() + begin;
     s.N = Eigen::Map<const Eigen::VectorXd>(stencil_N_.data() + begin, ns);
     s.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
         stencil_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
     du_local.resize(ns, Dim);
     for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil_nodes_[begin + a] * Dim + i);
+      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil[a] * Dim + i);
     const PointStartState start = start_state(points, p);
-    if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
-    if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-      add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
-    store_trial(p, r.state, r.volume);
-    for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i)
-        f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
+    const bool mixed = is_mixed(points, p);
+    const int n = static_cast<int>(ns) * Dim, local = n + (mixed ? static_cast<int>(ns) : 0);
+    f_local.resize(local);
+    if (tangent) K_local.setZero(local, local);
+    if (mixed) {
+      // N vanishes outside the point's cell, so its pressure is that of its cell (eq. 9.1).
+      p_local.resize(ns);
+      for (Index a = 0; a < ns; ++a)
+        p_local(a) = pressure_start_(stencil[a]) + pressure_scale_ * du(pressure_dof(stencil[a]));
+      if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr, rm))
+        return false;
+      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+        add_target_spring(p, s.N, du_local, tangent != nullptr, rm.u.internal_force,
+                          rm.u.stiffness);
+      store_trial(p, rm.u.state, rm.u.volume);
+      trial_.stress[p] = rm.total_stress;
+      f_local << rm.u.internal_force, pressure_scale_ * rm.pressure_residual;
+      if (tangent) {
+        const double s_p = pressure_scale_;
+        K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
+      }
+    } else {
+      if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
+      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+        add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
+      store_trial(p, r.state, r.volume);
+      f_local = r.internal_force;
+      if (tangent) K_local = r.stiffness;
+    }
+    dofs.resize(local);
+    for (int l = 0; l < local; ++l) dofs[l] = local_dof(stencil, static_cast<int>(ns), l);
+    for (int l = 0; l < local; ++l) f_int(dofs[l]) += f_local(l);
     if (!tangent) continue;
     double* values = tangent->valuePtr();
-    for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i) {
-        const Index col = free_index_[stencil_nodes_[begin + a] * Dim + i];
-        if (col < 0) continue;
-        const int* at = inner + outer[col];
-        const int* end = inner + outer[col + 1];
-        for (Index b = 0; b < ns; ++b)  // stencil nodes are sorted: rows ascend
-          for (int k = 0; k < Dim; ++k) {
-            const Index row = free_index_[stencil_nodes_[begin + b] * Dim + k];
-            if (row < 0) continue;
-            at = std::lower_bound(at, end, row);
-            values[at - inner] += r.stiffness(b * Dim + k, a * Dim + i);
-          }
+    for (int lc = 0; lc < local; ++lc) {
+      const Index col = free_index_[dofs[lc]];
+      if (col < 0) continue;
+      const int* at = inner + outer[col];
+      const int* end = inner + outer[col + 1];
+      // Stencil nodes are sorted and pressures come after displacements: rows ascend.
+      for (int lr = 0; lr < local; ++lr) {
+        const Index row = free_index_[dofs[lr]];
+        if (row < 0) continue;
+        at = std::lower_bound(at, end, row);
+        values[at - inner] += K_local(lr, lc);
       }
+    }
   }
   return true;
 }

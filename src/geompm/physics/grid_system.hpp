@@ -3,10 +3,14 @@
 // into the points before it is reset (phase 3, convect).
 //
 // Unknowns are the nodal displacement increments of the step, numbered node-major over the
-// active nodes (index = active node * dim + component). The tangent is assembled only for the
-// free unknowns, into a pattern built once per step; assembly runs in parallel over cells of one
-// colour at a time (no two cells of a colour share a node), which also makes the sums
-// independent of the thread count.
+// active nodes (index = active node * dim + component). With the mixed p-u formulation
+// (docs/theory.md §9) every active node also carries a pressure unknown, numbered after all
+// displacements (index = active nodes * dim + active node): the pressure's change over the step
+// divided by a scale s = G/h, so that it is a length like the displacements and its equation,
+// multiplied by s, a force (theory eq. 9.6) - one residual norm and one correction norm serve. The
+// tangent is assembled only for the free unknowns, into a pattern built once per step; assembly
+// runs in parallel over cells of one colour at a time (no two cells of a colour share a node),
+// which also makes the sums independent of the thread count.
 #pragma once
 
 #include <Eigen/Core>
@@ -29,6 +33,9 @@ struct GridSettings {
   double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
   int buffer_layers = 1;            // layers of empty cells activated around occupied cells
   bool dual_domain = false;         // DDMP gradients (docs/theory.md §8) instead of standard MPM
+  /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §9). The
+  /// system has pressure unknowns when any material is mixed.
+  std::vector<char> mixed;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -79,7 +86,16 @@ class GridSystem {
 
   // --- grid data --------------------------------------------------------------------------
   int dim() const { return dim_; }
-  Index num_dofs() const { return static_cast<Index>(active_nodes_.size()) * dim_; }
+  Index num_dofs() const {
+    return static_cast<Index>(active_nodes_.size()) * (dim_ + (mixed_ ? 1 : 0));
+  }
+  /// True if the system has pressure unknowns (some material is mixed).
+  bool mixed() const { return mixed_; }
+  /// The unknown that carries the pressure of active node a (mixed systems only).
+  Index pressure_dof(Index a) const { return static_cast<Index>(active_nodes_.size()) * dim_ + a; }
+  /// Nodal pressures (compression positive) per active node for the unknowns `x` of the step
+  /// (dof-indexed, as passed to internal_force): p = p_start + s x_p (theory eq. 9.6).
+  Vector nodal_pressure(const Vector& x) const;
   Index num_free() const { return num_free_; }
   const std::vector<Index>& active_nodes() const { return active_nodes_; }
   const std::vector<Index>& node_to_active() const { return node_to_active_; }
@@ -102,9 +118,23 @@ class GridSystem {
  private:
   template <class E>
   void initialise_typed(MaterialPoints& points);
-  template <class E>
+  template <class E, bool Mixed>
   bool internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
                             SparseMatrix* tangent);
+  template <class E>
+  void pressure_stabilisation(const MaterialPoints& points, Index ci,
+                              Eigen::Matrix<double, E::nodes, E::nodes>& S) const;
+  void initialise_pressure(const MaterialPoints& points);
+  /// Global unknown of local unknown l of a cell or stencil with `nodes` active nodes: u of node
+  /// l / dim first, then the pressures (l >= nodes * dim).
+  template <class Nodes>
+  Index local_dof(const Nodes& active, int nodes, int l) const {
+    const int n = nodes * dim_;
+    return l < n ? active[l / dim_] * dim_ + l % dim_ : pressure_dof(active[l - n]);
+  }
+  bool is_mixed(const MaterialPoints& points, Index p) const {
+    return mixed_ && settings_.mixed[points.material[p]];
+  }
   template <class E>
   void convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
                      const Vector& acceleration, double dt, bool dynamic) const;
@@ -132,7 +162,8 @@ class GridSystem {
   std::vector<Index> active_cells_;
   std::vector<Index> cell_point_begin_, cell_point_end_;  // into the cell-sorted points
   std::vector<double> cell_fill_;
-  std::vector<double> cell_size_;  // per point: size of its cell
+  std::vector<double> cell_mixed_fill_;  // fraction covered by points of mixed materials
+  std::vector<double> cell_size_;        // per point: size of its cell
   std::vector<Index> node_to_active_, active_nodes_;
   std::vector<std::vector<Index>> colours_;  // positions in active_cells_
 
@@ -151,12 +182,19 @@ class GridSystem {
   std::vector<Vec3> point_reaction_;
 
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
-  std::vector<double> empty_stiffness_;     // (nen*dim)^2 per cell with (1 - fill) > 0
+  std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0
+
+  // Mixed p-u (docs/theory.md §9).
+  bool mixed_ = false;
+  double pressure_scale_ = 1.0;  // s = G / h (eq. 9.6)
+  double reference_bulk_ = 1.0;  // K of the pressure regularisation of empty space
+  Vector pressure_start_;        // nodal pressure at the start of the step
+  int cell_dofs() const { return nen_ * dim_ + (mixed_ ? nen_ : 0); }
 
   Index num_free_ = 0;
   std::vector<Index> free_index_;
   SparseMatrix pattern_;
-  std::vector<int> scatter_;  // (nen*dim)^2 per active cell: position in the values, or -1
+  std::vector<int> scatter_;  // cell_dofs()^2 per active cell: position in the values, or -1
 
  public:
   // Trial state of each point at the last evaluation (committed by convect()).

@@ -66,16 +66,23 @@ struct KernelResult {
 template <class E>
 using PointKernelResult = KernelResult<E::nodes, E::dim>;
 
-/// du: the stencil's nodal displacement increments, row a = node a. Returns false if the
-/// point's deformation is inadmissible (det dF <= 0): Newton then cuts the step back.
+/// The point's gradient operator: row c = component (row[c], col[c]) of G^{a,i}, column a*dim + i
+/// (docs/theory.md eq. 2.7), on the current (trial) configuration.
 template <int NS, int Dim>
-bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
-                     const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
-                     KernelResult<NS, Dim>& out) {
+using GradientOperator =
+    Eigen::Matrix<double, GradientComponents<Dim>::count, KernelResult<NS, Dim>::n>;
+
+/// The kinematics and stress update of one point: from the stencil's nodal displacement
+/// increments du (row a = node a) to the point's trial state, current volume and gradient
+/// operator B. Returns false if the point's deformation is inadmissible (det dF <= 0): Newton
+/// then cuts the step back. Shared by the displacement and the mixed kernels.
+template <int NS, int Dim>
+bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
+                  const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
+                  KernelResult<NS, Dim>& out, GradientOperator<NS, Dim>& B) {
   constexpr int dim = Dim;
   using GC = GradientComponents<dim>;
   constexpr int nc = GC::count;
-  constexpr int n_dofs = KernelResult<NS, Dim>::n;
   const int nen = static_cast<int>(s.N.size());
   const int n = nen * dim;
 
@@ -99,8 +106,6 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   const Eigen::Matrix<double, dim, dim> dF_inplane = dF.template topLeftCorner<dim, dim>();
   const Eigen::Matrix<double, NS, dim> dN_dx = s.dN_dX * dF_inplane.inverse();
 
-  // B: row c = component (row[c], col[c]) of G^{a,i}; column a*dim + i.
-  Eigen::Matrix<double, nc, n_dofs> B;
   B.setZero(nc, n);
   for (int a = 0; a < nen; ++a)
     for (int c = 0; c < nc; ++c) {
@@ -109,6 +114,20 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
     }
   if (axisymmetric)
     for (int a = 0; a < nen; ++a) B(nc - 1, a * dim + 0) = s.N(a) / radius;
+  return true;
+}
+
+/// The displacement formulation at one point: internal force  v B^T sigma  (seed eq. 5) and
+/// tangent  v B^T a B  (seed eq. 10, theory eq. 3.9). du as in deform_point.
+template <int NS, int Dim>
+bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
+                     const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
+                     KernelResult<NS, Dim>& out) {
+  using GC = GradientComponents<Dim>;
+  constexpr int nc = GC::count;
+  constexpr int n_dofs = KernelResult<NS, Dim>::n;
+  GradientOperator<NS, Dim> B;
+  if (!deform_point(s, p, du, axisymmetric, want_tangent, out, B)) return false;
 
   Eigen::Matrix<double, nc, 1> sigma;
   for (int c = 0; c < nc; ++c) sigma(c) = out.state.cauchy_stress(GC::row[c], GC::col[c]);

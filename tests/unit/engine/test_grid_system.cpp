@@ -1,8 +1,10 @@
 // The assembled tangent of the grid system against a finite difference of its internal force,
 // for standard MPM and DDMP gradients, in plane strain and axisymmetry, with points spread over
-// several cells (docs/theory.md eqs. 3.9, 6.1, 8.2).
+// several cells, in the displacement and the mixed p-u formulation (docs/theory.md eqs. 3.9,
+// 6.1, 8.2, 9.3-9.7).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 
 #include "geompm/physics/grid_system.hpp"
@@ -11,13 +13,27 @@
 namespace geompm {
 namespace {
 
-void check_assembled_tangent(const std::string& example, bool dual_domain) {
+// A material for every point of the example, in the mixed formulation when `mixed`.
+struct MaterialChoice {
+  std::string model;
+  std::map<std::string, double> parameters;
+  bool mixed = false;
+};
+
+void check_assembled_tangent(const std::string& example, bool dual_domain,
+                             const MaterialChoice* choice = nullptr) {
   auto spec = testing::read_example(example);
+  if (choice)
+    for (auto& material : spec.materials) {
+      material.model = choice->model;
+      material.parameters = choice->parameters;
+    }
   auto model = build_model(spec);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
   settings.dual_domain = dual_domain;
+  if (choice) settings.mixed.assign(spec.materials.size(), choice->mixed);
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
@@ -43,7 +59,34 @@ void check_assembled_tangent(const std::string& example, bool dual_domain) {
     worst = std::max(
         worst, (dense.col(grid.free_index()[j]) - column).norm() / std::max(column.norm(), 1e-12));
   }
-  EXPECT_LT(worst, 1e-5) << example << (dual_domain ? " (DDMP)" : " (standard)");
+  EXPECT_LT(worst, 1e-5) << example << (dual_domain ? " (DDMP)" : " (standard)")
+                         << (choice ? " " + choice->model : "");
+}
+
+// Plastic flow and a non-zero pressure field in the mixed formulation: random increments of the
+// scaled pressure unknowns as large as the displacements give pressures of the order of the
+// stresses, so every block of eqs. 9.3-9.4 and the stabilisation (9.5) is exercised.
+const MaterialChoice mixed_tresca{
+    "tresca", {{"su", 5.0}, {"E", 1e4}, {"nu", 0.49}, {"density", 1.0}}, true};
+const MaterialChoice mixed_mohr_coulomb{
+    "mohr_coulomb",
+    {{"c", 2.0}, {"phi", 30.0}, {"psi", 10.0}, {"E", 1e4}, {"nu", 0.3}, {"density", 1.0}},
+    true};
+
+TEST(GridSystemTangent, MixedTrescaPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", false, &mixed_tresca);
+}
+TEST(GridSystemTangent, MixedMohrCoulombPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", false, &mixed_mohr_coulomb);
+}
+TEST(GridSystemTangent, MixedTrescaAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", false, &mixed_tresca);
+}
+TEST(GridSystemTangent, MixedTrescaDualDomain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", true, &mixed_tresca);
+}
+TEST(GridSystemTangent, MixedMohrCoulomb3D) {
+  check_assembled_tangent("column/column_3d.yaml", false, &mixed_mohr_coulomb);
 }
 
 TEST(GridSystemTangent, StandardPlaneStrain) {

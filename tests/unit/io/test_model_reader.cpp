@@ -191,6 +191,19 @@ TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
   EXPECT_EQ(m.numerics.buffer_layers, 2);
   EXPECT_EQ(m.numerics.lost_points, spec::LostPointPolicy::Remove);
   EXPECT_EQ(m.numerics.linear_solver, "sparse_lu");
+  EXPECT_EQ(m.numerics.formulation, spec::Formulation::Displacement);  // the default
+  EXPECT_FALSE(m.materials[0].formulation.has_value());
+}
+
+TEST(ModelReader, ReadsTheMixedFormulationGloballyAndPerMaterial) {
+  const std::string text = testing::apply(
+      testing::kValidModel,
+      {{"buffer_layers: 2,", "buffer_layers: 2, formulation: mixed,"},
+       {"    density: 0.08\n", "    density: 0.08\n    formulation: displacement\n"}});
+  const spec::Model m = read_model_from_string(text, "model.yaml");
+  EXPECT_EQ(m.numerics.formulation, spec::Formulation::Mixed);
+  EXPECT_EQ(m.materials[0].formulation, spec::Formulation::Displacement);
+  EXPECT_EQ(m.materials[0].parameters.count("formulation"), 0u);
 }
 
 TEST(ModelReader, FillsDefaultsOfAMinimalModel) {
