@@ -53,7 +53,9 @@ std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
   std::vector<double> v = {0.0, 0.0};
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
-    if (h.quantity == "displacement")
+    if (h.quantity == "displacement" && !h.boundary.empty())
+      v.push_back(0.0);
+    else if (h.quantity == "displacement")
       v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.displacement));
     else if (h.quantity == "velocity")
       v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.velocity));
@@ -90,6 +92,10 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
       } else if (auto it = step.set_reactions.find(set_bits_[k]); it != step.set_reactions.end()) {
         value = it->second(h.component);
       }
+    } else if (h.quantity == "displacement" && !h.boundary.empty()) {
+      // What the grid motions of the boundary have prescribed so far (docs/theory.md §5.3).
+      if (auto it = model.grid_displacement.find(h.boundary); it != model.grid_displacement.end())
+        value = it->second(h.component);
     } else if (h.quantity == "displacement") {
       value = point_set_mean(model, set_bits_[k], h.component, model.points.displacement);
     } else if (h.quantity == "velocity") {

@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <limits>
 
+#include "geompm/analysis/geostatic_stress.hpp"
+#include "geompm/analysis/region_test.hpp"
+#include "geompm/boundary/fixities.hpp"
+#include "geompm/boundary/grid_motions.hpp"
 #include "geompm/core/expression.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
@@ -31,82 +35,22 @@ double Model::largest_modulus() const {
   return E;
 }
 
-namespace {
-
-std::string group_names(const std::map<std::string, std::vector<Index>>& groups) {
-  std::string names;
-  for (const auto& [name, members] : groups) names += (names.empty() ? "" : ", ") + name;
-  return names.empty() ? "(none)" : names;
+Index body_material_at(const spec::Model& spec, const spec::Body& body, double elevation) {
+  std::string name = body.material;
+  if (!body.layers.empty()) {
+    name = body.layers.back().material;
+    for (const spec::Layer& layer : body.layers)
+      if (layer.bottom && elevation >= *layer.bottom) {
+        name = layer.material;
+        break;
+      }
+  }
+  for (std::size_t m = 0; m < spec.materials.size(); ++m)
+    if (spec.materials[m].name == name) return static_cast<Index>(m);
+  throw std::logic_error("body '" + body.name + "' refers to an unknown material " + name);
 }
 
-// Whether a region holds the position x (or, for a group region, the cell).
-class RegionTest {
- public:
-  RegionTest(const spec::Region& region, const Mesh& mesh, int dim) : region_(region), dim_(dim) {
-    if (region.kind == spec::Region::Kind::Group) {
-      auto it = mesh.cell_groups.find(region.group);
-      if (it == mesh.cell_groups.end())
-        throw InputError(region.source,
-                         fmt::format("the mesh has no region '{}'; its regions are: {}",
-                                     region.group, group_names(mesh.cell_groups)));
-      cells_ = &it->second;
-    }
-  }
-
-  bool contains(const Vec3& x, Index cell) const {
-    using K = spec::Region::Kind;
-    switch (region_.kind) {
-      case K::All:
-        return true;
-      case K::Group:
-        return std::binary_search(cells_->begin(), cells_->end(), cell);
-      case K::Box:
-        for (int d = 0; d < dim_; ++d)
-          if (x(d) < region_.min(d) || x(d) > region_.max(d)) return false;
-        return true;
-      case K::Circle:
-        return (x - region_.center).head(dim_).norm() <= region_.radius;
-      case K::Polygon:
-        return inside_polygon(x);
-    }
-    return false;
-  }
-
-  /// Bounding box of a geometric region (nullopt for All and Group).
-  std::optional<std::pair<Vec3, Vec3>> bounds() const {
-    using K = spec::Region::Kind;
-    if (region_.kind == K::Box) return std::make_pair(region_.min, region_.max);
-    if (region_.kind == K::Circle)
-      return std::make_pair(Vec3(region_.center.array() - region_.radius),
-                            Vec3(region_.center.array() + region_.radius));
-    if (region_.kind == K::Polygon) {
-      Vec3 lo = region_.polygon.front(), hi = lo;
-      for (const auto& v : region_.polygon) {
-        lo = lo.cwiseMin(v);
-        hi = hi.cwiseMax(v);
-      }
-      return std::make_pair(lo, hi);
-    }
-    return std::nullopt;
-  }
-
- private:
-  bool inside_polygon(const Vec3& x) const {
-    // Even-odd rule.
-    bool inside = false;
-    const auto& v = region_.polygon;
-    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-      if ((v[i].y() > x.y()) != (v[j].y() > x.y()) &&
-          x.x() < (v[j].x() - v[i].x()) * (x.y() - v[i].y()) / (v[j].y() - v[i].y()) + v[i].x())
-        inside = !inside;
-    }
-    return inside;
-  }
-
-  const spec::Region& region_;
-  int dim_;
-  const std::vector<Index>* cells_ = nullptr;
-};
+namespace {
 
 Mesh make_mesh(const spec::Model& spec) {
   const int dim = spatial_dimension(spec.kinematics);
@@ -146,12 +90,50 @@ Mesh make_mesh(const spec::Model& spec) {
   return mesh;
 }
 
+// Node sets join the mesh's boundaries (node groups), so that everything naming a boundary can
+// name them.
+void add_node_sets(const spec::Model& spec, Mesh& mesh) {
+  const int dim = mesh.dim();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (const auto& x : mesh.nodes) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const double tol = 1e-9 * (hi - lo).head(dim).norm();
+  for (const auto& set : spec.node_sets) {
+    if (mesh.node_groups.count(set.name))
+      throw InputError(set.source, fmt::format("'{}' is a boundary of the mesh already; give the "
+                                               "node set another name",
+                                               set.name));
+    std::vector<Index> nodes;
+    for (Index n = 0; n < mesh.num_nodes(); ++n) {
+      const Vec3& x = mesh.nodes[n];
+      bool inside = true;
+      for (int d = 0; d < dim; ++d)
+        inside = inside && x(d) >= set.min(d) - tol && x(d) <= set.max(d) + tol;
+      if (inside) nodes.push_back(n);
+    }
+    if (nodes.empty())
+      throw InputError(set.source, fmt::format("node set '{}' holds no mesh node: no node lies in "
+                                               "its box",
+                                               set.name));
+    mesh.node_groups[set.name] = std::move(nodes);
+  }
+}
+
+void check_boundary(const Mesh& mesh, const std::string& boundary, const SourceLocation& source) {
+  if (!boundary.empty() && !mesh.node_groups.count(boundary))
+    throw InputError(source, fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
+                                         boundary, group_names(mesh.node_groups)));
+}
+
 }  // namespace
 
 std::unique_ptr<Model> build_model(const spec::Model& spec) {
   auto model = std::make_unique<Model>();
   model->spec = spec;
   model->mesh = make_mesh(spec);
+  add_node_sets(spec, model->mesh);
   const Mesh& mesh = model->mesh;
   const int dim = mesh.dim();
   model->topology = build_mesh_topology(mesh);
@@ -189,10 +171,6 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                           "[{}, {}] in {} but the mesh spans [{}, {}]",
                           body.name, box->first(d), box->second(d), "xyz"[d], lo(d), hi(d)));
     }
-    Index material = 0;
-    for (std::size_t m = 0; m < spec.materials.size(); ++m)
-      if (spec.materials[m].name == body.material) material = static_cast<Index>(m);
-    const double density = model->materials[material]->density();
     std::array<Expression, 3> v0;
     for (int d = 0; d < 3; ++d) v0[d] = Expression(body.initial_velocity[d]);
 
@@ -215,8 +193,9 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                              fmt::format("bodies '{}' and '{}' overlap (at x = [{:g}, {:g}, {:g}])",
                                          body.name, spec.bodies[other].name, s.position.x(),
                                          s.position.y(), s.position.z()));
+        const Index material = body_material_at(spec, body, s.position(dim - 1));
         const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                          density, c, s.xi);
+                                          model->materials[material]->density(), c, s.xi);
         // Point-dependent state, e.g. a strength growing with depth.
         try {
           model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
@@ -258,17 +237,19 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
       throw InputError(set.source, fmt::format("point set '{}' holds no material point", set.name));
   }
 
-  for (const auto& phase : spec.phases)
-    for (const auto& fixity : phase.fixities)
-      if (!fixity.boundary.empty() && !mesh.node_groups.count(fixity.boundary))
-        throw InputError(fixity.source,
-                         fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
-                                     fixity.boundary, group_names(mesh.node_groups)));
+  // Fixities and grid motions are resolved again when their phase starts; resolving them here
+  // reports a plane with no node, or a node driven twice, before the run starts.
+  for (const auto& phase : spec.phases) {
+    for (const auto& fixity : phase.fixities) check_boundary(mesh, fixity.boundary, fixity.source);
+    for (const auto& motion : phase.grid_motions)
+      check_boundary(mesh, motion.boundary, motion.source);
+    resolve_fixities(mesh, phase.fixities);
+    resolve_grid_motions(mesh, phase.grid_motions);
+  }
   for (const auto& history : spec.output.histories)
-    if (!history.boundary.empty() && !mesh.node_groups.count(history.boundary))
-      throw InputError(history.source,
-                       fmt::format("the mesh has no boundary '{}'; its boundaries are: {}",
-                                   history.boundary, group_names(mesh.node_groups)));
+    check_boundary(mesh, history.boundary, history.source);
+  // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §9), before any step.
+  apply_k0_procedure(*model);
   return model;
 }
 
@@ -296,8 +277,16 @@ std::string describe_model(const Model& model) {
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;
     for (Index p = 0; p < model.points.size(); ++p) count += model.points.body[p] == Index(b);
-    out += fmt::format("body       {}: {} points, {} per cell, material {}\n", spec.bodies[b].name,
-                       count, spec.bodies[b].points_per_cell, spec.bodies[b].material);
+    const auto& body = spec.bodies[b];
+    std::string material = "material " + body.material;
+    if (!body.layers.empty()) {
+      material = "layers";
+      for (const auto& layer : body.layers)
+        material += " " + layer.material +
+                    (layer.bottom ? fmt::format(" down to {:g},", *layer.bottom) : " below");
+    }
+    out += fmt::format("body       {}: {} points, {} per cell, {}\n", body.name, count,
+                       body.points_per_cell, material);
   }
   for (std::size_t k = 0; k < model.point_set_names.size(); ++k) {
     Index count = 0;
@@ -306,11 +295,12 @@ std::string describe_model(const Model& model) {
   }
   for (const auto& phase : spec.phases)
     out += fmt::format(
-        "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}\n", phase.name, phase.duration,
+        "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}{}\n", phase.name, phase.duration,
         phase.time_step.initial, phase.time_step.min, phase.time_step.max,
         phase.dynamics.quasi_static ? std::string("quasi-static")
                                     : fmt::format("Newmark beta={:g} gamma={:g}",
-                                                  phase.dynamics.beta, phase.dynamics.gamma));
+                                                  phase.dynamics.beta, phase.dynamics.gamma),
+        phase.k0_procedure ? ", starts from the K0 procedure's geostatic stresses" : "");
   return out;
 }
 

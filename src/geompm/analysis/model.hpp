@@ -2,6 +2,7 @@
 // seeded into the bodies, and the named point sets; built from the spec read from a model file.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +24,10 @@ struct Model {
   std::vector<std::unique_ptr<Material>> materials;  // in the order of spec.materials
   MaterialPoints points;
   std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
-  double lost_mass = 0.0;                    // of points removed after leaving the mesh
+  /// Displacement prescribed so far on the nodes of each driven boundary or node set (grid
+  /// motions, summed over the phases; components never driven stay 0), for histories.
+  std::map<std::string, Vec3> grid_displacement;
+  double lost_mass = 0.0;  // of points removed after leaving the mesh
   Index lost_points = 0;
 
   Kinematics kinematics() const { return spec.kinematics; }
@@ -32,11 +36,16 @@ struct Model {
   double largest_modulus() const;
 };
 
+/// The material (index into spec.materials) of `body` at `elevation` (y in 2D, z in 3D): its one
+/// material, or that of the layer holding the elevation (a layer holds its bottom; the last
+/// layer everything below).
+Index body_material_at(const spec::Model& spec, const spec::Body& body, double elevation);
+
 /// Builds the mesh (generated or imported), checks it, creates the materials, seeds the bodies and
 /// selects the point sets. Throws InputError naming the model file, key path and line for
 /// anything the reader could not check alone (a region group the mesh lacks, a body outside the
 /// mesh or with no points, overlapping bodies, an empty point set, a fixity boundary the mesh
-/// lacks).
+/// lacks, a node set holding no node, a node driven twice).
 std::unique_ptr<Model> build_model(const spec::Model& spec);
 
 /// The summary `geompm check` prints: mesh, points, materials, bodies, phases.

@@ -1,11 +1,12 @@
 #include "geompm/analysis/phase_context.hpp"
 
-#include <limits>
+#include <algorithm>
 
 namespace geompm {
 
 PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(&phase) {
   fixities = resolve_fixities(model.mesh, phase.fixities);
+  grid_motions = resolve_grid_motions(model.mesh, phase.grid_motions);
   for (const auto& m : phase.motions) {
     Motion motion;
     motion.set = model.point_set_bit(m.point_set);
@@ -29,15 +30,7 @@ Vec3 PhaseContext::gravity(double t) const {
 }
 
 Vec3 PhaseContext::motion_increment(const Motion& m, double t0, double t1) const {
-  Vec3 du = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  for (int d = 0; d < 3; ++d) {
-    if (!m.components[d]) continue;
-    const Expression& f = *m.components[d];
-    // A velocity is integrated with the trapezoidal rule, consistent with Newmark (gamma = 1/2).
-    du(d) = m.velocity ? 0.5 * (t1 - t0) * (f.at_time(t0) + f.at_time(t1))
-                       : f.at_time(t1) - f.at_time(t0);
-  }
-  return du;
+  return prescribed_increment(m.components, m.velocity, t0, t1);
 }
 
 Vec3 PhaseContext::load(const Load& l, double t) const {

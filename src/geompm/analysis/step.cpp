@@ -160,6 +160,22 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
       for (int i = 0; i < dim; ++i)
         if (fixity.components[i]) result.constrained[n * dim + i] = 1;
     }
+  // Prescribed motion of grid nodes (docs/theory.md §5.3): constrained unknowns with a non-zero
+  // increment, set before Newton. Newton solves for the free unknowns only and never changes
+  // these, so every residual it evaluates sees them. On a node also fixed, the motion wins.
+  std::vector<Vec3> grid_increments;
+  for (const auto& motion : phase.grid_motions) {
+    grid_increments.push_back(motion.increment(t0, t1));
+    for (Index node : motion.nodes) {
+      const Index n = node_to_active[node];
+      if (n < 0) continue;
+      for (int i = 0; i < dim; ++i)
+        if (!std::isnan(grid_increments.back()(i))) {
+          result.constrained[n * dim + i] = 1;
+          du(n * dim + i) = grid_increments.back()(i);
+        }
+    }
+  }
   grid_.set_constraints(result.constrained);
 
   // --- phase 2: Lagrangian (Newton) -------------------------------------------------------
@@ -191,12 +207,19 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
     result.set_reactions.try_emplace(phase.motions[m].set, Vec3::Zero()).first->second += force;
   }
   convect_and_relocate(result, dt, dynamic);
-  if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
+  if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove) {
     for (std::size_t m = 0; m < phase.motions.size(); ++m) {
       const Vec3 reached = prescribed[m];
       for (int i = 0; i < 3; ++i)
         if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
     }
+    for (std::size_t m = 0; m < phase.grid_motions.size(); ++m) {
+      Vec3& done = model_.grid_displacement.try_emplace(phase.grid_motions[m].name, Vec3::Zero())
+                       .first->second;
+      for (int i = 0; i < 3; ++i)
+        if (!std::isnan(grid_increments[m](i))) done(i) += grid_increments[m](i);
+    }
+  }
   return result;
 }
 

@@ -140,7 +140,8 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
                        fmt::format("missing required key 'model' in {}; known models: {}",
                                    material.source.key_path, yaml::join(material_models())));
     try {
-      create_material(material.model, material.parameters);
+      if (create_material(material.model, material.parameters)->default_k0())
+        context.materials_with_default_k0.push_back(name);
     } catch (const ParameterError& e) {
       if (const yaml::Node* value = entry_of(e.key())) value->fail(e.what());
       throw InputError(
@@ -207,7 +208,7 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
   if (!root.is_map())
     root.fail(fmt::format("expected a map of sections ({}), found {}", sections, root.describe()));
   const yaml::Map top = root.map({"title", "analysis", "mesh", "materials", "bodies", "point_sets",
-                                  "phases", "output", "numerics"});
+                                  "node_sets", "phases", "output", "numerics"});
 
   spec::Model model;
   model.file = file_name;
@@ -224,6 +225,8 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
   model.bodies = read_bodies(top.required("bodies"), context);
   if (auto point_sets = top.find_non_empty("point_sets"))
     model.point_sets = read_point_sets(*point_sets, context);
+  if (auto node_sets = top.find_non_empty("node_sets"))
+    model.node_sets = read_node_sets(*node_sets, context);
   model.phases = read_phases(top.required("phases"), context);
   if (auto output = top.find_non_empty("output")) model.output = read_output(*output, context);
   if (auto numerics = top.find_non_empty("numerics")) model.numerics = read_numerics(*numerics);

@@ -84,6 +84,43 @@ int read_points_per_cell(const yaml::Node& node, const Context& context) {
   return count;
 }
 
+// Layers by elevation, top down: every layer but the last has a bottom, below the one above.
+std::vector<spec::Layer> read_layers(const yaml::Node& node, const Context& context) {
+  const char* vertical = context.dimension == 3 ? "z" : "y";
+  if (!node.is_list())
+    node.fail(
+        fmt::format("expected a list of layers, top down, such as [{{material: sand, bottom: "
+                    "6}}, {{material: clay}}]; found {}",
+                    node.describe()));
+  const std::vector<yaml::Node> items = node.items();
+  if (items.size() < 2)
+    node.fail(fmt::format("expected at least 2 layers, found {} (one material: use 'material')",
+                          items.size()));
+  std::vector<spec::Layer> layers;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const yaml::Map entry = items[k].map({"material", "bottom"});
+    spec::Layer layer;
+    layer.source = items[k].where();
+    layer.material = read_reference(entry.required("material"), "material", context.materials);
+    const bool last = k + 1 == items.size();
+    if (last) {
+      if (auto bottom = entry.find("bottom"))
+        bottom->fail(
+            "the last layer reaches down to the bottom of the body's region: remove its 'bottom'");
+    } else {
+      const yaml::Node bottom = entry.required("bottom");
+      layer.bottom = bottom.number();
+      if (!layers.empty() && !(*layer.bottom < *layers.back().bottom))
+        bottom.fail(
+            fmt::format("layers are listed top down: the bottom of this layer ({} = {}) "
+                        "must lie below that of the layer above ({} = {})",
+                        vertical, *layer.bottom, vertical, *layers.back().bottom));
+    }
+    layers.push_back(std::move(layer));
+  }
+  return layers;
+}
+
 }  // namespace
 
 spec::Region read_region(const yaml::Node& node, const Context& context) {
@@ -132,11 +169,19 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context) {
   for (const auto& [name, body_node] : node.entries()) {
     if (name.empty()) body_node.fail("a body needs a name");
     const yaml::Map entry =
-        body_node.map({"material", "region", "points_per_cell", "initial_velocity"});
+        body_node.map({"material", "layers", "region", "points_per_cell", "initial_velocity"});
     spec::Body body;
     body.name = name;
     body.source = body_node.where();
-    body.material = read_reference(entry.required("material"), "material", context.materials);
+    std::vector<std::string>& materials = context.body_materials[name];
+    if (entry.has("layers")) {
+      entry.exactly_one_of({"material", "layers"});
+      body.layers = read_layers(entry.required("layers"), context);
+      for (const spec::Layer& layer : body.layers) materials.push_back(layer.material);
+    } else {
+      body.material = read_reference(entry.required("material"), "material", context.materials);
+      materials.push_back(body.material);
+    }
     body.region = read_region(entry.required("region"), context);
     // 4 points per cell is a quadrilateral's 2 x 2; a hexahedron has no 4-point rule.
     body.points_per_cell = context.cell_type == CellType::Hex8 ? 8 : 4;

@@ -51,13 +51,15 @@ spec::History read_history(const yaml::Node& node, const Context& context,
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);
 
   if (contains(vector_quantities, quantity)) {
+    // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes.
+    const bool on_boundary = quantity == "reaction" || quantity == "displacement";
     const std::string target =
-        quantity == "reaction" ? section.exactly_one_of({"boundary", "point_set"}) : "point_set";
-    if (target == "point_set" && quantity != "reaction")
+        on_boundary ? section.exactly_one_of({"boundary", "point_set"}) : "point_set";
+    if (!on_boundary)
       if (auto boundary = section.find("boundary"))
         boundary->fail(
             fmt::format("{} is measured on a point set: give point_set (a boundary "
-                        "is only for reaction)",
+                        "is only for reaction and displacement)",
                         quantity));
     if (target == "boundary")
       history.boundary = read_boundary_name(section.required("boundary"), context);

@@ -115,6 +115,90 @@ spec::Gravity read_gravity(const yaml::Node& node, const Context& context) {
   return gravity;
 }
 
+// The K0 procedure: K0 per material (or one number for all), the bodies it sets (default all).
+// It stands for the weight of level ground, so it needs the phase's full, vertical gravity.
+spec::K0Procedure read_k0_procedure(const yaml::Node& node, const yaml::Map& phase,
+                                    const std::optional<spec::Gravity>& gravity,
+                                    const Context& context, bool first_phase) {
+  if (!first_phase)
+    node.fail(
+        "the K0 procedure sets the stresses the analysis starts from: it is allowed only in the "
+        "first phase (phases[0])");
+  // "k0_procedure:" alone: every material takes its default K0, every body is set.
+  const yaml::Map section = node.is_null() ? yaml::Map(node, {}) : node.map({"K0", "bodies"});
+  spec::K0Procedure procedure;
+  procedure.source = node.where();
+
+  const int vertical = context.dimension - 1;
+  const char* axis = context.dimension == 3 ? "z" : "y";
+  if (!gravity)
+    node.fail(fmt::format(
+        "the K0 procedure needs the phase's gravity for the weight of the soil: add gravity: "
+        "{{acceleration: {}}}",
+        context.dimension == 3 ? "[0, 0, -9.81]" : "[0, -9.81]"));
+  const yaml::Map gravity_map = phase.required("gravity").map({"acceleration", "ramp"});
+  if (gravity->ramp)
+    gravity_map.required("ramp").fail(
+        "the K0 procedure starts from the full weight of the soil, so gravity must be full from "
+        "the start of the phase: remove 'ramp' (a ramped gravity phase is the alternative to the "
+        "K0 procedure, not a part of it)");
+  for (int d = 0; d < context.dimension; ++d)
+    if (d == vertical ? !(gravity->acceleration(d) < 0) : gravity->acceleration(d) != 0)
+      gravity_map.required("acceleration")
+          .fail(fmt::format("the K0 procedure is for level ground: gravity must point straight "
+                            "down (-{}), with its other components 0",
+                            axis));
+
+  if (auto bodies = section.find_non_empty("bodies")) {
+    const std::vector<yaml::Node> items = bodies->items();
+    for (const yaml::Node& item : items) {
+      const std::string name = read_reference(item, "body", context.bodies);
+      if (std::find(procedure.bodies.begin(), procedure.bodies.end(), name) !=
+          procedure.bodies.end())
+        item.fail(fmt::format("the body '{}' is listed twice", name));
+      procedure.bodies.push_back(name);
+    }
+  }
+  const std::vector<std::string>& bodies =
+      procedure.bodies.empty() ? context.bodies : procedure.bodies;
+
+  const std::optional<yaml::Node> k0 = section.find("K0");
+  if (k0 && k0->is_scalar()) {
+    const double value = read_positive(*k0);
+    for (const std::string& material : context.materials) procedure.k0[material] = value;
+  } else if (k0) {
+    if (!k0->is_map())
+      k0->fail(
+          "expected K0 as a number for every material, or a map of materials to numbers "
+          "such as {sand: 0.5, clay: 0.65}; found " +
+          k0->describe());
+    for (const auto& [material, value] : k0->entries()) {
+      if (std::find(context.materials.begin(), context.materials.end(), material) ==
+          context.materials.end())
+        value.fail(fmt::format("no material named '{}'{}; defined: {}", material,
+                               yaml::did_you_mean(material, context.materials),
+                               yaml::join(context.materials)));
+      procedure.k0[material] = read_positive(value);
+    }
+  }
+  // Every material of the bodies set needs a K0, given or by default.
+  for (const std::string& body : bodies)
+    for (const std::string& material : context.body_materials.at(body)) {
+      const auto& defaults = context.materials_with_default_k0;
+      if (procedure.k0.count(material) ||
+          std::find(defaults.begin(), defaults.end(), material) != defaults.end())
+        continue;
+      const std::string what = fmt::format(
+          "no K0 for the material '{}' (of body '{}'); only mohr_coulomb has a default "
+          "(1 - sin phi): give K0: {{{}: ...}}",
+          material, body, material);
+      if (k0) k0->fail(what);
+      const SourceLocation at = node.where();
+      throw InputError(SourceLocation{at.file, at.key_path + ".K0", at.line}, what);
+    }
+  return procedure;
+}
+
 void read_fixed_components(const yaml::Node& node, const Context& context, spec::Fixity& fixity) {
   const std::string expected =
       fmt::format("expected normal, all, a component or a list of components such as {}",
@@ -177,6 +261,28 @@ spec::PrescribedMotion read_motion(const yaml::Node& node, const Context& contex
   return motion;
 }
 
+// The nodes as a fixity names them (a boundary, node set or plane), driven like a point set.
+spec::GridMotion read_grid_motion(const yaml::Node& node, const Context& context) {
+  const yaml::Map section = node.map({"boundary", "plane", "displacement", "velocity"});
+  spec::GridMotion motion;
+  motion.source = node.where();
+  if (section.exactly_one_of({"boundary", "plane"}) == "boundary") {
+    motion.boundary = read_boundary_name(section.required("boundary"), context);
+  } else {
+    const yaml::Map plane = section.required("plane").map({"axis", "value"});
+    motion.plane_axis = read_component(plane.required("axis"), context.dimension);
+    motion.plane_value = plane.required("value").number();
+  }
+  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
+  motion.velocity = kind == "velocity";
+  const yaml::Node components = section.required(kind);
+  motion.components = read_expression_vector(components, context.dimension, time_only, true, "");
+  if (std::all_of(motion.components.begin(), motion.components.end(),
+                  [](const std::string& c) { return c.empty(); }))
+    components.fail("every component is free (~); prescribe at least one, or remove the entry");
+  return motion;
+}
+
 spec::PointSetLoad read_load(const yaml::Node& node, const Context& context) {
   const yaml::Map section = node.map({"point_set", "force"});
   spec::PointSetLoad load;
@@ -207,8 +313,9 @@ void check_point_set_used_once(const yaml::Node& node, const std::string& point_
 
 spec::Phase read_phase(const yaml::Node& node, const Context& context,
                        const std::vector<spec::Phase>& earlier) {
-  const yaml::Map section = node.map({"name", "duration", "time_step", "dynamics", "newton",
-                                      "gravity", "fixities", "prescribed_motion", "loads"});
+  const yaml::Map section =
+      node.map({"name", "duration", "time_step", "dynamics", "newton", "gravity", "k0_procedure",
+                "fixities", "prescribed_motion", "grid_motion", "loads"});
   spec::Phase phase;
   phase.source = node.where();
   const yaml::Node name = section.required("name");
@@ -223,6 +330,8 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
   if (auto dynamics = section.find("dynamics")) phase.dynamics = read_dynamics(*dynamics);
   if (auto newton = section.find_non_empty("newton")) phase.newton = read_newton(*newton);
   if (auto gravity = section.find("gravity")) phase.gravity = read_gravity(*gravity, context);
+  if (auto k0 = section.find("k0_procedure"))
+    phase.k0_procedure = read_k0_procedure(*k0, section, phase.gravity, context, earlier.empty());
   if (auto fixities = section.find_non_empty("fixities"))
     for (const yaml::Node& item : fixities->items())
       phase.fixities.push_back(read_fixity(item, context));
@@ -231,6 +340,17 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
       spec::PrescribedMotion motion = read_motion(item, context);
       check_point_set_used_once(item, motion.point_set, phase.motions, phase.loads);
       phase.motions.push_back(std::move(motion));
+    }
+  if (auto motions = section.find_non_empty("grid_motion"))
+    for (const yaml::Node& item : motions->items()) {
+      spec::GridMotion motion = read_grid_motion(item, context);
+      for (const spec::GridMotion& other : phase.grid_motions)
+        if (!motion.boundary.empty() && other.boundary == motion.boundary)
+          item.fail(
+              fmt::format("the nodes of '{}' are already driven in this phase ({}, line {}); "
+                          "give one motion per boundary",
+                          motion.boundary, other.source.key_path, other.source.line));
+      phase.grid_motions.push_back(std::move(motion));
     }
   if (auto loads = section.find_non_empty("loads"))
     for (const yaml::Node& item : loads->items()) {

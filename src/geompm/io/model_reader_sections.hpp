@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,8 +25,14 @@ struct Context {
   /// import, when its physical groups are known).
   std::vector<std::string> boundaries;
   std::vector<std::string> materials;
+  /// Materials whose model has a default K0 (mohr_coulomb: 1 - sin phi).
+  std::vector<std::string> materials_with_default_k0;
   std::vector<std::string> bodies;
+  /// The materials of each body (one, or those of its layers).
+  std::map<std::string, std::vector<std::string>> body_materials;
   std::vector<std::string> point_sets;
+  /// Named node sets: boundaries too (read_boundary_name accepts them).
+  std::vector<std::string> node_sets;
 };
 
 // Sections, in file order.
@@ -34,6 +41,7 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 spec::Region read_region(const yaml::Node& node, const Context& context);
 std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
 std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
+std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& context);
 std::vector<spec::Phase> read_phases(const yaml::Node& node, const Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
@@ -58,7 +66,8 @@ std::array<std::string, 3> read_expression_vector(const yaml::Node& node, int di
 std::string read_reference(const yaml::Node& node, const std::string& kind,
                            const std::vector<std::string>& defined);
 
-/// A boundary name: for a generated mesh one of its boundaries; for an imported one any name.
+/// A boundary name: a node set, or for a generated mesh one of its boundaries; for an imported
+/// mesh any name (checked when the mesh is read).
 std::string read_boundary_name(const yaml::Node& node, const Context& context);
 
 /// Numbers with a range, failing with the range in the message.

@@ -111,11 +111,13 @@ std::string read_boundary_name(const yaml::Node& node, const Context& context) {
   if (name.empty()) node.fail("expected a boundary name, found an empty text");
   // An imported mesh's boundaries are its physical groups, known only after import.
   if (context.boundaries.empty()) return name;
-  if (std::find(context.boundaries.begin(), context.boundaries.end(), name) ==
-      context.boundaries.end())
-    node.fail(fmt::format("no boundary '{}' on the generated mesh{}; its boundaries are: {}", name,
-                          yaml::did_you_mean(name, context.boundaries),
-                          yaml::join(context.boundaries)));
+  std::vector<std::string> known = context.boundaries;
+  known.insert(known.end(), context.node_sets.begin(), context.node_sets.end());
+  if (std::find(known.begin(), known.end(), name) == known.end())
+    node.fail(fmt::format(
+        "no boundary '{}' on the generated mesh{}; its boundaries are: {}{}", name,
+        yaml::did_you_mean(name, known), yaml::join(context.boundaries),
+        context.node_sets.empty() ? "" : "; the node sets: " + yaml::join(context.node_sets)));
   return name;
 }
 

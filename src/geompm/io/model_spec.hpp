@@ -48,9 +48,18 @@ struct Region {
   SourceLocation source;
 };
 
+/// A layer of a body layered by depth: the body's points at or above `bottom` (and below the
+/// layer above) take `material`. The last layer has no bottom: it reaches down to the body's.
+struct Layer {
+  std::string material;
+  std::optional<double> bottom;  // elevation (y in 2D, z in 3D) of the layer's base
+  SourceLocation source;
+};
+
 struct Body {
   std::string name;
-  std::string material;
+  std::string material;       // one material, or ...
+  std::vector<Layer> layers;  // ... layers by elevation, top down (then `material` is empty)
   Region region;
   int points_per_cell = 4;
   std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
@@ -64,6 +73,16 @@ struct PointSet {
   std::string name;
   std::string body;
   Region region;
+  SourceLocation source;
+};
+
+/// Named set of grid nodes: the mesh nodes in a box (min <= max; a side of zero length selects
+/// the nodes on a line or plane, e.g. the base of a footing). Added to the mesh's boundaries, so
+/// fixities, grid motions and reaction histories refer to it by name like a boundary.
+struct NodeSet {
+  std::string name;
+  Vec3 min = Vec3::Zero();
+  Vec3 max = Vec3::Zero();
   SourceLocation source;
 };
 
@@ -85,6 +104,18 @@ struct PrescribedMotion {
   SourceLocation source;
 };
 
+/// Prescribed motion of grid nodes (docs/theory.md §5.3): the nodes of a boundary, node set or
+/// plane are moved by the given displacement (or velocity) per component, an expression of t or
+/// empty = free. A smooth footing drives only the vertical component, a rough one every one.
+struct GridMotion {
+  std::string boundary;  // a boundary or node set; empty when a plane is given
+  int plane_axis = -1;
+  double plane_value = 0.0;
+  bool velocity = false;  // false: the expressions give the displacement since phase start
+  std::array<std::string, 3> components;  // "" = free
+  SourceLocation source;
+};
+
 /// A force on a point set (load control), shared among its points in proportion to mass.
 struct PointSetLoad {
   std::string point_set;
@@ -95,6 +126,15 @@ struct PointSetLoad {
 struct Gravity {
   Vec3 acceleration = Vec3::Zero();
   bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
+};
+
+/// The K0 procedure (docs/theory.md §9): the analysis starts from geostatic stresses in the
+/// points of `bodies`, sigma_v = weight of the soil above (with the first phase's gravity) and
+/// sigma_h = K0 sigma_v, for level ground in horizontal layers. Only in the first phase.
+struct K0Procedure {
+  std::map<std::string, double> k0;  // per material; a material absent takes its default
+  std::vector<std::string> bodies;   // empty: every body
+  SourceLocation source;
 };
 
 struct TimeStepping {
@@ -125,8 +165,10 @@ struct Phase {
   Dynamics dynamics;
   Newton newton;
   std::optional<Gravity> gravity;
+  std::optional<K0Procedure> k0_procedure;
   std::vector<Fixity> fixities;
   std::vector<PrescribedMotion> motions;
+  std::vector<GridMotion> grid_motions;
   std::vector<PointSetLoad> loads;
   SourceLocation source;
 };
@@ -136,7 +178,7 @@ struct History {
   std::string name;       // column name; defaults to quantity[_target][_component]
   std::string quantity;   // reaction | displacement | velocity | position | kinetic_energy |
                           // strain_energy | newton_iterations | time_step | load
-  std::string boundary;   // reaction on a boundary
+  std::string boundary;   // reaction on a boundary or node set; displacement of its grid motion
   std::string point_set;  // reaction, displacement, velocity, position, load of a point set
   int component = -1;     // 0, 1, 2; -1 for scalars
   SourceLocation source;
@@ -182,6 +224,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<Body> bodies;
   std::vector<PointSet> point_sets;
+  std::vector<NodeSet> node_sets;
   std::vector<Phase> phases;
   Output output;
   Numerics numerics;

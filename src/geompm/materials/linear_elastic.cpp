@@ -1,5 +1,7 @@
 #include "geompm/materials/linear_elastic.hpp"
 
+#include "geompm/materials/parameters.hpp"
+
 namespace geompm {
 
 LinearElastic::LinearElastic(double E, double nu, double density)
@@ -16,6 +18,11 @@ void LinearElastic::update(const Mat3& eps, const InternalVariables& internal_n,
 double LinearElastic::strain_energy(const Mat3& eps) const {
   const double tr = eps.trace();
   return 0.5 * lambda_ * tr * tr + mu_ * eps.squaredNorm();
+}
+
+std::optional<Mat3> LinearElastic::elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                             const InternalVariables&) const {
+  return hencky_strain(kirchhoff, E_, nu_);
 }
 
 }  // namespace geompm

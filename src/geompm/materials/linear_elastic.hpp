@@ -17,6 +17,8 @@ class LinearElastic final : public IsotropicElastic {
               StressUpdate& out) const override;
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "linear_elastic"; }
+  std::optional<Mat3> elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                const InternalVariables& internal) const override;
 
  private:
   Tensor4 elasticity_;

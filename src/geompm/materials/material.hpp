@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,21 @@ class Material {
   virtual int internal_variable_count() const { return 0; }
   /// Name of internal variable k < internal_variable_count() for output ("su", ...).
   virtual const char* internal_variable_name(int /*k*/) const { return ""; }
+
+  /// The elastic strain eps_e = 1/2 ln(b_e) at which the material's elastic law gives the
+  /// Kirchhoff stress `kirchhoff` (with the point's `internal` variables, e.g. its own E): the
+  /// inverse of the elastic law, used to start a point from a given stress (the K0 procedure,
+  /// docs/theory.md §9), since a point stores b_e and its stress follows from it. Exact for the
+  /// Hencky law of every current model. Whether that stress is admissible (inside a yield
+  /// surface) is not checked here: update() at the returned strain tells. nullopt: the model
+  /// cannot be started from a stress.
+  virtual std::optional<Mat3> elastic_strain_for_stress(
+      const Mat3& /*kirchhoff*/, const InternalVariables& /*internal*/) const {
+    return std::nullopt;
+  }
+  /// The coefficient of earth pressure at rest the K0 procedure uses when the model file gives
+  /// none (Mohr-Coulomb: Jaky's 1 - sin phi); nullopt: the model file must give it.
+  virtual std::optional<double> default_k0() const { return std::nullopt; }
 };
 
 using ParameterMap = std::map<std::string, double>;

@@ -97,6 +97,15 @@ const char* MohrCoulomb::internal_variable_name(int k) const {
   return k >= 0 && k < 2 ? names[k] : "";
 }
 
+std::optional<Mat3> MohrCoulomb::elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                           const InternalVariables&) const {
+  return hencky_strain(kirchhoff, p_.youngs_modulus, p_.poisson_ratio);
+}
+
+std::optional<double> MohrCoulomb::default_k0() const {
+  return 1.0 - std::sin(radians(p_.friction_angle));
+}
+
 double MohrCoulomb::strain_energy(const Mat3& eps) const {
   const double tr = eps.trace();
   return 0.5 * lambda_ * tr * tr + mu_ * eps.squaredNorm();

@@ -60,6 +60,10 @@ class MohrCoulomb final : public Material {
   const char* model_name() const override { return "mohr_coulomb"; }
   int internal_variable_count() const override { return 2; }
   const char* internal_variable_name(int k) const override;
+  std::optional<Mat3> elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                const InternalVariables& internal) const override;
+  /// Jaky's K0 = 1 - sin(phi) for a normally consolidated soil.
+  std::optional<double> default_k0() const override;
 
   /// The return in principal space for trial strains sorted eps_1 >= eps_2 >= eps_3: the core of
   /// update(), public so that tests can see the region.

@@ -1,6 +1,9 @@
 #include "geompm/materials/neo_hookean.hpp"
 
+#include <Eigen/LU>
 #include <cmath>
+
+#include "geompm/materials/parameters.hpp"
 
 namespace geompm {
 
@@ -25,6 +28,24 @@ double NeoHookean::strain_energy(const Mat3& eps) const {
   const Mat3 b = symmetric_exp(2.0 * eps);
   const double lnJ = eps.trace();
   return 0.5 * mu_ * (b.trace() - 3.0) - mu_ * lnJ + 0.5 * lambda_ * lnJ * lnJ;
+}
+
+std::optional<Mat3> NeoHookean::elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                          const InternalVariables&) const {
+  const SymmetricEigen t = symmetric_eigen(kirchhoff);
+  const double scale = std::max(mu_, t.values.cwiseAbs().maxCoeff());
+  Vec3 eps = (hencky_strain(t.values.asDiagonal().toDenseMatrix(), E_, nu_)).diagonal();
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Vec3 r;
+    Mat3 jacobian = Mat3::Constant(lambda_);
+    for (int a = 0; a < 3; ++a) {
+      r(a) = mu_ * (std::exp(2 * eps(a)) - 1) + lambda_ * eps.sum() - t.values(a);
+      jacobian(a, a) += 2 * mu_ * std::exp(2 * eps(a));
+    }
+    if (r.cwiseAbs().maxCoeff() <= 1e-13 * scale) break;
+    eps -= jacobian.lu().solve(r);
+  }
+  return t.vectors * eps.asDiagonal() * t.vectors.transpose();
 }
 
 }  // namespace geompm

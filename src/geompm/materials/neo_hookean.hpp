@@ -16,6 +16,10 @@ class NeoHookean final : public IsotropicElastic {
               StressUpdate& out) const override;
   double strain_energy(const Mat3& eps) const override;
   const char* model_name() const override { return "neo_hookean"; }
+  /// Newton on the principal values of tau_a = mu (exp(2 eps_a) - 1) + lambda sum_b eps_b, from
+  /// the Hencky strain (the law is strictly monotone: a unique solution).
+  std::optional<Mat3> elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                const InternalVariables& internal) const override;
 };
 
 }  // namespace geompm

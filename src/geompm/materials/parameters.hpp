@@ -31,4 +31,10 @@ class ParameterReader {
 inline double lame_lambda(double E, double nu) { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
 inline double shear_modulus(double E, double nu) { return E / (2 * (1 + nu)); }
 
+/// The inverse of the Hencky law tau = lambda tr(eps) I + 2 mu eps (docs/theory.md §3.3):
+/// eps = ((1 + nu) tau - nu tr(tau) I) / E.
+inline Mat3 hencky_strain(const Mat3& kirchhoff, double E, double nu) {
+  return ((1 + nu) * kirchhoff - nu * kirchhoff.trace() * Mat3::Identity()) / E;
+}
+
 }  // namespace geompm

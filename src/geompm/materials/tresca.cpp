@@ -88,6 +88,11 @@ std::array<double, 2> Tresca::point_strength_and_modulus(const InternalVariables
   return {su, p_.youngs_modulus > 0 ? p_.youngs_modulus : p_.modulus_to_strength * su};
 }
 
+std::optional<Mat3> Tresca::elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                      const InternalVariables& internal) const {
+  return hencky_strain(kirchhoff, point_strength_and_modulus(internal)[1], p_.poisson_ratio);
+}
+
 double Tresca::reference_modulus() const { return point_strength_and_modulus({})[1]; }
 
 ElasticModuli Tresca::elastic_moduli(const InternalVariables& internal) const {

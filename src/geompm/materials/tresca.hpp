@@ -65,6 +65,9 @@ class Tresca final : public Material {
                         InternalVariables& internal) const override;
   int internal_variable_count() const override { return 3; }
   const char* internal_variable_name(int k) const override;
+  /// The Hencky inverse with the point's own E.
+  std::optional<Mat3> elastic_strain_for_stress(const Mat3& kirchhoff,
+                                                const InternalVariables& internal) const override;
 
   /// s_u at vertical coordinate y (eq. M.11), not yet checked for being positive.
   double strength_at(double y) const;
