@@ -216,7 +216,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                          body.name, spec.bodies[other].name, s.position.x(),
                                          s.position.y(), s.position.z()));
         const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                          density, c, s.xi);
+                                          density, c, s.xi, s.half_size);
         // Point-dependent state, e.g. a strength growing with depth.
         try {
           model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
