@@ -8,6 +8,7 @@
 #include "geompm/core/expression.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
+#include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/seeding.hpp"
 
@@ -155,6 +156,16 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   const Mesh& mesh = model->mesh;
   const int dim = mesh.dim();
   model->topology = build_mesh_topology(mesh);
+  if (spec.numerics.interpolation == spec::Interpolation::Gimp) {
+    // GIMP weights are tensor products along grid lines (docs/theory.md §9).
+    std::string why;
+    if (!find_rectilinear_grid(mesh, why))
+      throw InputError(spec.numerics.interpolation_source,
+                       fmt::format("gimp needs a rectilinear grid (axis-aligned quad4 or hex8 "
+                                   "cells on complete grid lines, uniform or graded, as the "
+                                   "built-in generator makes), but {}; use standard or ddmp",
+                                   why));
+  }
   model->locator = std::make_unique<PointLocator>(mesh);
 
   for (const auto& m : spec.materials) {

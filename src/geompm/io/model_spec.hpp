@@ -154,14 +154,16 @@ struct Output {
 
 enum class LostPointPolicy { Stop, Remove };
 
-/// How a point sees the grid: standard MPM shape functions of its cell, or the dual domain
-/// material point method (DDMP, seed §3.6; docs/theory.md §8) with smoothed gradients.
-enum class Interpolation { Standard, DualDomain };
+/// How a point sees the grid: standard MPM shape functions of its cell, the dual domain
+/// material point method (DDMP, seed §3.6; docs/theory.md §8) with smoothed gradients, or GIMP
+/// weights averaged over the point's domain (docs/theory.md §9; rectilinear grids only).
+enum class Interpolation { Standard, DualDomain, Gimp };
 
 struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
-  double empty_cell_stiffness = 1e-6;  // relative to the largest Young's modulus
-  int buffer_layers = 1;               // layers of empty cells kept active around the body
+  SourceLocation interpolation_source;  // where it was given, for errors found with the mesh
+  double empty_cell_stiffness = 1e-6;   // relative to the largest Young's modulus
+  int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
 };

@@ -6,6 +6,7 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/point_kernel.hpp"
 
 namespace geompm {
@@ -37,7 +38,35 @@ GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
       materials_(materials),
       settings_(settings),
       dim_(mesh.dim()),
-      nen_(mesh.nodes_per_cell()) {}
+      nen_(mesh.nodes_per_cell()) {
+  if (settings_.interpolation == GridInterpolation::Gimp) {
+    std::string why;
+    rectilinear_ = find_rectilinear_grid(mesh, why);
+    if (!rectilinear_)
+      throw std::invalid_argument("numerics.interpolation: gimp needs a rectilinear grid, but " +
+                                  why);
+  }
+}
+
+template <class F>
+void GridSystem::for_each_weight(const MaterialPoints& points, Index p, F&& f) const {
+  // f(active node, N_a(x_p)) over the nodes point p sees: its wide stencil (DDMP, GIMP) or its
+  // cell. The one place that knows the difference, for mapping, loads and convect.
+  if (wide_stencil()) {
+    for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a) f(wide_nodes_[a], wide_N_[a]);
+    return;
+  }
+  const auto nodes = mesh_.cell_nodes(points.cell[p]);
+  for (int a = 0; a < nen_; ++a) f(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a]);
+}
+
+Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const {
+  Vec3 value = Vec3::Zero();
+  for_each_weight(points, p, [&](Index node, double N) {
+    for (int i = 0; i < dim_; ++i) value(i) += N * nodal(node * dim_ + i);
+  });
+  return value;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Phase 1: initialise
@@ -55,14 +84,15 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   const Index n_cells = mesh_.num_cells();
 
   // Active cells: occupied cells, then `buffer_layers` rings of neighbours (seed §3.2: empty
-  // buffer cells catch points that move out of the body, e.g. above a free surface).
+  // buffer cells catch points that move out of the body, e.g. above a free surface). With GIMP
+  // a cell that a point's domain overlaps is occupied too: the nodes of the point's stencil are
+  // its nodes.
   std::vector<char> is_active(n_cells, 0);
+  for (Index p = 0; p < n_points; ++p) is_active[points.cell[p]] = 1;
+  if (settings_.interpolation == GridInterpolation::Gimp) build_gimp_stencils(points, is_active);
   std::vector<Index> frontier;
-  for (Index p = 0; p < n_points; ++p)
-    if (!is_active[points.cell[p]]) {
-      is_active[points.cell[p]] = 1;
-      frontier.push_back(points.cell[p]);
-    }
+  for (Index c = 0; c < n_cells; ++c)
+    if (is_active[c]) frontier.push_back(c);
   for (int layer = 0; layer < settings_.buffer_layers; ++layer) {
     std::vector<Index> next;
     for (Index c : frontier)
@@ -103,6 +133,9 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       node_to_active_[node] = static_cast<Index>(active_nodes_.size());
       active_nodes_.push_back(node);
     }
+  // Stencils were built with mesh node ids, ascending; active ids keep their order.
+  if (settings_.interpolation == GridInterpolation::Gimp)
+    for (Index& node : wide_nodes_) node = node_to_active_[node];
   colour_active_cells();
 
   // Shape functions and reference gradients at each point, on the grid of this step.
@@ -131,23 +164,24 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
   }
 
+  empty_cell_stiffness_typed<E>();
+  if (settings_.interpolation == GridInterpolation::DualDomain)
+    build_dual_domain_stencils<E>(points);
+
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_dofs = num_dofs();
   mass_ = Vector::Zero(n_dofs);
   velocity_ = Vector::Zero(n_dofs);
   acceleration_ = Vector::Zero(n_dofs);
-  for (Index p = 0; p < n_points; ++p) {
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
-    for (int a = 0; a < nen; ++a) {
-      const double w = points.mass[p] * shape_[std::size_t(p) * nen + a];
-      const Index base = node_to_active_[nodes[a]] * dim;
+  for (Index p = 0; p < n_points; ++p)
+    for_each_weight(points, p, [&](Index node, double N) {
+      const double w = points.mass[p] * N;
       for (int i = 0; i < dim; ++i) {
-        mass_(base + i) += w;
-        velocity_(base + i) += w * points.velocity[p](i);
-        acceleration_(base + i) += w * points.acceleration[p](i);
+        mass_(node * dim + i) += w;
+        velocity_(node * dim + i) += w * points.velocity[p](i);
+        acceleration_(node * dim + i) += w * points.acceleration[p](i);
       }
-    }
-  }
+    });
   const double tiny = n_dofs > 0 ? 1e-14 * std::max(mass_.maxCoeff(), 0.0) : 0.0;
   for (Index d = 0; d < n_dofs; ++d) {
     if (mass_(d) > tiny) {
@@ -157,9 +191,6 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       velocity_(d) = acceleration_(d) = 0.0;
     }
   }
-
-  empty_cell_stiffness_typed<E>();
-  if (settings_.dual_domain) build_dual_domain_stencils<E>(points);
 
   trial_.stress.resize(n_points);
   trial_.F.resize(n_points);
@@ -258,12 +289,9 @@ Vector GridSystem::external_force(const MaterialPoints& points, const Vec3& grav
       if (points.sets[p] >> forces[k].set & 1u)
         force += forces[k].force * (set_mass[k] > 0 ? points.mass[p] / set_mass[k]
                                                     : points.volume[p] / set_volume[k]);
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
-    for (int a = 0; a < nen_; ++a) {
-      const double N = shape_[std::size_t(p) * nen_ + a];
-      const Index base = node_to_active_[nodes[a]] * dim_;
-      for (int i = 0; i < dim_; ++i) f(base + i) += N * force(i);
-    }
+    for_each_weight(points, p, [&](Index node, double N) {
+      for (int i = 0; i < dim_; ++i) f(node * dim_ + i) += N * force(i);
+    });
   }
   return f;
 }
@@ -292,11 +320,11 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
     for (Index a : nodes)
       for (Index b : nodes) neighbours[node_to_active_[a]].push_back(node_to_active_[b]);
   }
-  if (settings_.dual_domain)
-    for (std::size_t p = 0; p + 1 < stencil_start_.size(); ++p)
-      for (Index a = stencil_start_[p]; a < stencil_start_[p + 1]; ++a)
-        for (Index b = stencil_start_[p]; b < stencil_start_[p + 1]; ++b)
-          neighbours[stencil_nodes_[a]].push_back(stencil_nodes_[b]);
+  if (wide_stencil())
+    for (std::size_t p = 0; p + 1 < wide_start_.size(); ++p)
+      for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a)
+        for (Index b = wide_start_[p]; b < wide_start_[p + 1]; ++b)
+          neighbours[wide_nodes_[a]].push_back(wide_nodes_[b]);
   std::vector<int> outer(num_free_ + 1, 0);
   std::vector<int> inner;
   for (Index a = 0; a < n_nodes; ++a) {
@@ -429,7 +457,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
 
       PointKernelResult<E> r;
       PointStencil<E> s;
-      const Index point_end = settings_.dual_domain ? cell_point_begin_[ci] : cell_point_end_[ci];
+      // Points with a wide stencil are assembled one by one below.
+      const Index point_end = wide_stencil() ? cell_point_begin_[ci] : cell_point_end_[ci];
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
@@ -459,8 +488,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       }
     }
   }
-  if (settings_.dual_domain && !dual_domain_point_forces<dim>(points, du, f_int, tangent))
-    return false;
+  if (wide_stencil() && !wide_stencil_point_forces<dim>(points, du, f_int, tangent)) return false;
   return admissible;
 }
 
@@ -505,10 +533,10 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     }
   }
 
-  stencil_start_.assign(n_points + 1, 0);
-  stencil_nodes_.clear();
-  stencil_N_.clear();
-  stencil_gradients_.clear();
+  wide_start_.assign(n_points + 1, 0);
+  wide_nodes_.clear();
+  wide_N_.clear();
+  wide_gradients_.clear();
   std::vector<std::pair<Index, Gradient>> entries;
   for (Index p = 0; p < n_points; ++p) {
     const auto nodes = mesh_.cell_nodes(points.cell[p]);
@@ -539,20 +567,51 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     std::sort(entries.begin(), entries.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [i, g] : entries) {
-      stencil_nodes_.push_back(i);
+      wide_nodes_.push_back(i);
       double value = 0.0;
       for (int a = 0; a < nen; ++a)
         if (node_to_active_[nodes[a]] == i) value = N[a];
-      stencil_N_.push_back(value);
-      for (int d = 0; d < dim; ++d) stencil_gradients_.push_back(g(d));
+      wide_N_.push_back(value);
+      for (int d = 0; d < dim; ++d) wide_gradients_.push_back(g(d));
     }
-    stencil_start_[p + 1] = static_cast<Index>(stencil_nodes_.size());
+    wide_start_[p + 1] = static_cast<Index>(wide_nodes_.size());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// GIMP: weights averaged over each point's domain (docs/theory.md §9)
+// ---------------------------------------------------------------------------------------------
+
+void GridSystem::build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active) {
+  // Each point's domain: the seeded half-lengths stretched with the diagonal of F (cpGIMP,
+  // eq. 9.4), clipped to the grid (eq. 9.5); weights and gradients eq. 9.1-9.3 on the grid at
+  // the start of the step. Node ids are the mesh's here (initialise renumbers them); every
+  // cell the domain overlaps is marked occupied.
+  const RectilinearGrid& grid = *rectilinear_;
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  const Index n_points = points.size();
+  wide_start_.assign(n_points + 1, 0);
+  wide_nodes_.clear();
+  wide_N_.clear();
+  wide_gradients_.clear();
+  GimpStencil s;
+  for (Index p = 0; p < n_points; ++p) {
+    const Vec3 half =
+        particle_half_lengths(points.initial_half_size[p], points.deformation_gradient[p], dim_);
+    gimp_stencil(grid, points.position[p], half, points.cell[p], axisymmetric, s);
+    wide_nodes_.insert(wide_nodes_.end(), s.nodes.begin(), s.nodes.end());
+    wide_N_.insert(wide_N_.end(), s.N.begin(), s.N.end());
+    wide_gradients_.insert(wide_gradients_.end(), s.gradients.begin(), s.gradients.end());
+    wide_start_[p + 1] = static_cast<Index>(wide_nodes_.size());
+    for (int k = s.first_cell[2]; k <= s.last_cell[2]; ++k)
+      for (int j = s.first_cell[1]; j <= s.last_cell[1]; ++j)
+        for (int i = s.first_cell[0]; i <= s.last_cell[0]; ++i) is_active[grid.cell(i, j, k)] = 1;
   }
 }
 
 template <int Dim>
-bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Vector& du,
-                                          Vector& f_int, SparseMatrix* tangent) {
+bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const Vector& du,
+                                           Vector& f_int, SparseMatrix* tangent) {
   // Points one after the other (their stencils overlap across cells of one colour).
   using Dynamic = Stencil<Eigen::Dynamic, Dim>;
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
@@ -562,13 +621,13 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
   for (Index p = 0; p < points.size(); ++p) {
-    const Index begin = stencil_start_[p], ns = stencil_start_[p + 1] - begin;
-    s.N = Eigen::Map<const Eigen::VectorXd>(stencil_N_.data() + begin, ns);
+    const Index begin = wide_start_[p], ns = wide_start_[p + 1] - begin;
+    s.N = Eigen::Map<const Eigen::VectorXd>(wide_N_.data() + begin, ns);
     s.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
-        stencil_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
+        wide_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
     du_local.resize(ns, Dim);
     for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil_nodes_[begin + a] * Dim + i);
+      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(wide_nodes_[begin + a] * Dim + i);
     const PointStartState start = start_state(points, p);
     if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
     if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
@@ -576,18 +635,18 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
     store_trial(p, r.state, r.volume);
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i)
-        f_int(stencil_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
+        f_int(wide_nodes_[begin + a] * Dim + i) += r.internal_force(a * Dim + i);
     if (!tangent) continue;
     double* values = tangent->valuePtr();
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i) {
-        const Index col = free_index_[stencil_nodes_[begin + a] * Dim + i];
+        const Index col = free_index_[wide_nodes_[begin + a] * Dim + i];
         if (col < 0) continue;
         const int* at = inner + outer[col];
         const int* end = inner + outer[col + 1];
         for (Index b = 0; b < ns; ++b)  // stencil nodes are sorted: rows ascend
           for (int k = 0; k < Dim; ++k) {
-            const Index row = free_index_[stencil_nodes_[begin + b] * Dim + k];
+            const Index row = free_index_[wide_nodes_[begin + b] * Dim + k];
             if (row < 0) continue;
             at = std::lower_bound(at, end, row);
             values[at - inner] += r.stiffness(b * Dim + k, a * Dim + i);
@@ -611,21 +670,19 @@ void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector&
 template <class E>
 void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
                                const Vector& acceleration, double dt, bool dynamic) const {
-  constexpr int nen = E::nodes, dim = E::dim;
+  constexpr int dim = E::dim;
   const Index n_points = points.size();
 #pragma omp parallel for schedule(static) if (n_points > 4096)
   for (Index p = 0; p < n_points; ++p) {
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    // Eq. 7.1 with the point's weights of this step (cell or wide stencil).
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero(), a = Vec3::Zero();
-    for (int k = 0; k < nen; ++k) {
-      const double N = shape_[std::size_t(p) * nen + k];
-      const Index base = node_to_active_[nodes[k]] * dim;
+    for_each_weight(points, p, [&](Index node, double N) {
       for (int i = 0; i < dim; ++i) {
-        dx(i) += N * du(base + i);
-        dv(i) += N * (velocity(base + i) - velocity_(base + i));
-        a(i) += N * acceleration(base + i);
+        dx(i) += N * du(node * dim + i);
+        dv(i) += N * (velocity(node * dim + i) - velocity_(node * dim + i));
+        a(i) += N * acceleration(node * dim + i);
       }
-    }
+    });
     points.position[p] += dx;
     points.displacement[p] += dx;
     points.phase_displacement[p] += dx;

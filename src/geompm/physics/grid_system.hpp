@@ -11,11 +11,13 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/physics/finite_strain.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
@@ -24,11 +26,15 @@ namespace geompm {
 
 struct PointStartState;  // physics/point_kernel.hpp
 
+/// How points see the grid: the shape functions of their cell (standard MPM), DDMP gradients
+/// (docs/theory.md §8) or GIMP weights over the point's domain (§9; rectilinear grids only).
+enum class GridInterpolation { Standard, DualDomain, Gimp };
+
 struct GridSettings {
   Kinematics kinematics = Kinematics::PlaneStrain;
   double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
   int buffer_layers = 1;            // layers of empty cells activated around occupied cells
-  bool dual_domain = false;         // DDMP gradients (docs/theory.md §8) instead of standard MPM
+  GridInterpolation interpolation = GridInterpolation::Standard;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -40,6 +46,7 @@ struct PointSetForce {
 
 class GridSystem {
  public:
+  /// Throws std::invalid_argument if GIMP is asked for on a mesh that is not a rectilinear grid.
   GridSystem(const Mesh& mesh, const MeshTopology& topology,
              const std::vector<const Material*>& materials, const GridSettings& settings);
 
@@ -94,10 +101,12 @@ class GridSystem {
   const std::vector<double>& cell_fill() const { return cell_fill_; }
   /// A length per active cell: its size (area or volume)^(1/dim), for penalty scaling.
   double cell_size(Index p) const { return cell_size_[p]; }
-  /// Shape values N_a of point p at its cell's nodes (valid after initialise()).
-  std::span<const double> shape_values(Index p) const {
-    return {shape_.data() + std::size_t(p) * nen_, std::size_t(nen_)};
-  }
+  /// sum_a N_a(x_p) u_a: a nodal vector field (dof-indexed) at point p, with the point's
+  /// weights of this step (its cell's shape functions, or its wide stencil). Valid after
+  /// initialise(), before the points are relocated.
+  Vec3 interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const;
+  /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
+  bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
 
  private:
   template <class E>
@@ -114,11 +123,14 @@ class GridSystem {
   void add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
                          const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
                          Stiffness& K);
+  template <class F>
+  void for_each_weight(const MaterialPoints& points, Index p, F&& f) const;
+  void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
   template <class E>
   void build_dual_domain_stencils(const MaterialPoints& points);
   template <int Dim>
-  bool dual_domain_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
-                                SparseMatrix* tangent);
+  bool wide_stencil_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                                 SparseMatrix* tangent);
   void colour_active_cells();
   PointStartState start_state(const MaterialPoints& points, Index p) const;
   void store_trial(Index p, const FiniteStrainState& state, double volume);
@@ -140,10 +152,13 @@ class GridSystem {
   std::vector<double> gradients_;  // nen * dim per point (dN/dX at the start of the step)
   Vector mass_, velocity_, acceleration_;
 
-  // DDMP: each point's stencil (active nodes, sorted), shape values (zero outside its cell) and
-  // smoothed reference gradients (dim per entry); point p spans [stencil_start_[p], ...[p+1]).
-  std::vector<Index> stencil_start_, stencil_nodes_;
-  std::vector<double> stencil_N_, stencil_gradients_;
+  std::optional<RectilinearGrid> rectilinear_;  // GIMP only
+
+  // Wide stencils (DDMP, GIMP): each point's nodes (active ids, ascending), weights N (DDMP:
+  // the cell's shape values, zero outside it) and reference gradients (dim per entry); point p
+  // spans [wide_start_[p], wide_start_[p + 1]).
+  std::vector<Index> wide_start_, wide_nodes_;
+  std::vector<double> wide_N_, wide_gradients_;
 
   std::vector<double> target_stiffness_;  // per point; empty when no point has a target
   std::vector<Vec3> target_;
