@@ -134,7 +134,6 @@ void StepCase::convect_and_relocate() {
   if (!evaluated_) evaluate();
   MaterialPoints& points = model_->points;
   const Index n = points.size();
-  const int dim = grid_->dim();
   if (saved_position_.empty()) {
     saved_position_ = points.position;
     saved_cell_ = points.cell;
@@ -143,15 +142,9 @@ void StepCase::convect_and_relocate() {
   // As StepSolver::convect_and_relocate: find every destination before committing anything.
   std::vector<Location> found(n);
   std::vector<char> lost(n, 0);
-  const auto& node_to_active = grid_->node_to_active();
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
-    const auto nodes = model_->mesh.cell_nodes(points.cell[p]);
-    const auto N = grid_->shape_values(p);
-    Vec3 destination = points.position[p];
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int i = 0; i < dim; ++i)
-        destination(i) += N[a] * du_(node_to_active[nodes[a]] * dim + i);
+    const Vec3 destination = points.position[p] + grid_->interpolate(points, p, du_);
     if (auto where = model_->locator->locate(destination, points.cell[p]))
       found[p] = *where;
     else

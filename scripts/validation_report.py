@@ -116,63 +116,107 @@ def main():
     w("")
 
     # --- column ---------------------------------------------------------------------------------
+    def column_text(path, interpolation, E=None, steps=20):
+        text = example(path)
+        assert "interpolation: gimp" in text, path  # the examples use GIMP
+        text = text.replace("interpolation: gimp", f"interpolation: {interpolation}")
+        if E is not None:
+            text = re.sub(r"E: [0-9.e+-]+,", f"E: {E:g},", text)
+        if steps == 1:
+            text = text.replace("initial: 0.05, min: 0.001, max: 0.05", "initial: 1.0, min: 0.001, max: 1.0")
+        return text
+
     w("## 2. Column under self-weight (Coombs & Augarde 2020, REFERENCES §2)")
     w("")
     w("Stress error measure `err = Σ|σ_p − σ(Y_p)| V0_p / Σ ρ0 g l0 V0_p`; settlement error of the top "
       "point row against the Hencky closed form at the same initial heights. Mesh h = 2 m, 2×2 points "
-      "per cell (2×2×2 in 3D).")
+      "per cell (2×2×2 in 3D). The examples (`examples/column/`) use GIMP "
+      "(`numerics.interpolation: gimp`, docs/theory.md §9); the other rows run the same models with "
+      "`standard` and `ddmp`. Targets of the issue: settlement within 1 % (E = 1 MPa) and 2 % "
+      "(E = 10 kPa) with gravity in 20 load steps.")
     w("")
-    w("| case | load steps | stress error | settlement error | Newton iterations (max per step) |")
-    w("|---|---|---|---|---|")
-    cases = [("plane strain", "column/column.yaml", 1, 49.0),
-             ("axisymmetric", "column/column_axisymmetric.yaml", 1, 49.0),
-             ("3D", "column/column_3d.yaml", 2, 49.0)]
-    for label, path, vertical, top in cases:
-        for steps in (1, 20):
-            text = example(path)
-            if steps == 1:
-                text = text.replace("initial: 0.05, min: 0.001, max: 0.05", "initial: 1.0, min: 0.001, max: 1.0")
-            out, h, summary = run(args.binary, text, f"col_{vertical}_{label[:3]}_{steps}", work)
-            err, serr, _, _ = column_errors(out, 1000.0, vertical, top)
-            it = int(np.max(h["newton_iterations"]))
-            w(f"| {label}, E = 1 MPa | {steps} | {err:.4f} | {serr*100:.2f} % | {it} |")
-    out, h, summary = run(args.binary, example("column/column_large_deformation.yaml"), "col_large", work)
-    err, serr, u_num, u_ex = column_errors(out, 10.0, 1, 49.0)
-    w(f"| plane strain, E = 10 kPa | 20 | {err:.4f} | {serr*100:.2f} % | {int(np.max(h['newton_iterations']))} |")
+    w("| case | interpolation | load steps | stress error | settlement error | target | Newton iterations (max per step) |")
+    w("|---|---|---|---|---|---|---|")
+    cases = [("plane strain", "column/column.yaml", 1),
+             ("axisymmetric", "column/column_axisymmetric.yaml", 1),
+             ("3D", "column/column_3d.yaml", 2)]
+    gimp_errors = []
+    for E, target in ((1000.0, 0.01), (10.0, 0.02)):
+        e_label = "E = 1 MPa" if E == 1000.0 else "E = 10 kPa"
+        for label, path, vertical in cases:
+            runs = [("standard", 1)] if E == 1000.0 else []
+            runs += [("standard", 20), ("ddmp", 20), ("gimp", 20)]
+            for interpolation, steps in runs:
+                text = column_text(path, interpolation, E, steps)
+                name = f"col_{label[:3]}_{int(E)}_{interpolation}_{steps}"
+                out, h, summary = run(args.binary, text, name, work)
+                err, serr, _, _ = column_errors(out, E, vertical, 49.0)
+                it = int(np.max(h["newton_iterations"]))
+                shown = f"< {target*100:g} %" if steps == 20 else ""
+                w(f"| {label}, {e_label} | {interpolation} | {steps} | {err:.4f} | {serr*100:.2f} % | {shown} | {it} |")
+                if interpolation == "gimp":
+                    gimp_errors.append((label, e_label, serr, target))
     w("")
-    w("Mesh refinement with 20 load steps (plane strain, E = 1 MPa), standard MPM and DDMP "
-      "(`numerics.interpolation: ddmp`), 2×2 and 4×4 points per cell:")
+    w("Mesh refinement with 20 load steps (plane strain, E = 1 MPa), standard MPM, DDMP and GIMP, "
+      "2×2 and 4×4 points per cell:")
     w("")
     w("| interpolation | points per cell | cells along the column | h | stress error | settlement error |")
     w("|---|---|---|---|---|---|")
-    for interpolation in ("standard", "ddmp"):
+    refinement = {}
+    for interpolation in ("standard", "ddmp", "gimp"):
         for ppc in (4, 16):
             for cells in (26, 52, 104):
                 hh = 52.0 / cells
                 rows = 2 if ppc == 4 else 4
                 top = 50 - hh / rows
-                text = example("column/column.yaml").replace("y: {length: 52, cells: 26}", f"y: {{length: 52, cells: {cells}}}")
+                text = column_text("column/column.yaml", interpolation)
+                text = text.replace("y: {length: 52, cells: 26}", f"y: {{length: 52, cells: {cells}}}")
                 text = text.replace("min: [0, 49.4]", f"min: [0, {top}]")
                 text = text.replace("points_per_cell: 4", f"points_per_cell: {ppc}")
-                text = text.replace("numerics: {", f"numerics: {{interpolation: {interpolation}, ")
                 out, h, summary = run(args.binary, text, f"col_ref_{interpolation}_{ppc}_{cells}", work)
                 err, serr, _, _ = column_errors(out, 1000.0, 1, top)
+                refinement[(interpolation, ppc, cells)] = err
                 w(f"| {interpolation} | {ppc} | {cells} | {hh:g} m | {err:.4f} | {serr*100:.2f} % |")
     w("")
-    w("**Reached:** with gravity in one load step, where no point crosses a cell within the step, the "
-      "settlement is within 0.03 % of the Hencky closed form in plane strain, axisymmetry and 3D, the stress "
-      "error is the 0.010 expected of piecewise-constant cell stresses, and Newton converges quadratically "
-      "(REFERENCES §7) — this verifies the finite-strain formulation, the tangent and the three kinematics.")
+    w("GIMP at large deformation (plane strain, E = 10 kPa, 52 % compression, 20 load steps, 2×2 points "
+      "per cell):")
     w("")
-    w("**Not reached:** the issue's targets of 1 % (E = 1 MPa) and 2 % (E = 10 kPa) settlement error with "
-      "gravity ramped in load steps. With standard MPM shape functions, points crossing cell boundaries "
-      "between steps make the error grow with refinement instead of shrinking — the behaviour the "
-      "literature reports for standard MPM (REFERENCES §2: error 0.06–0.1 at every h). The cause is the "
-      "interpolation, not the kinematics (the one-step runs above). DDMP (seed §3.6, docs/theory.md §8) "
-      "removes the jump of a crossing point's forces and lowers the stress error, but the settlement error, "
-      "which comes from integrating with unevenly spread points after crossings (a cell holding three rows "
-      "of points is too stiff, its neighbour with one row too soft), stays above 1 %. Integrating over "
-      "particle domains (GIMP/CPDI-type quadrature) is the remaining step towards the target.")
+    w("| cells along the column | h | stress error | settlement error | Newton iterations (max per step) |")
+    w("|---|---|---|---|---|")
+    for cells in (26, 52, 104):
+        hh = 52.0 / cells
+        text = column_text("column/column_large_deformation.yaml", "gimp")
+        text = text.replace("y: {length: 52, cells: 26}", f"y: {{length: 52, cells: {cells}}}")
+        text = text.replace("min: [0, 49.4]", f"min: [0, {50 - hh / 2}]")
+        out, h, summary = run(args.binary, text, f"col_large_ref_{cells}", work)
+        err, serr, _, _ = column_errors(out, 10.0, 1, 50 - hh / 2)
+        w(f"| {cells} | {hh:g} m | {err:.4f} | {serr*100:.2f} % | {int(np.max(h['newton_iterations']))} |")
+    w("")
+    reached = all(serr < target for _, _, serr, target in gimp_errors)
+    worst = {e: max(serr for _, el, serr, _ in gimp_errors if el == e) for e in ("E = 1 MPa", "E = 10 kPa")}
+    g = [refinement[("gimp", 4, c)] for c in (26, 52, 104)]
+    w(f"**{'Reached' if reached else 'Not reached'}** with GIMP: the settlement is within "
+      f"{worst['E = 1 MPa']*100:.2f} % of the Hencky closed form for E = 1 MPa (target 1 %) and within "
+      f"{worst['E = 10 kPa']*100:.2f} % for E = 10 kPa (target 2 %), in plane strain, axisymmetry and 3D, "
+      "with gravity in 20 load steps. The stress error falls with the mesh, "
+      f"{g[0]:.4f} → {g[1]:.4f} → {g[2]:.4f} for h = 2 → 1 → 0.5 m (rate about "
+      f"{math.log(g[0]/g[2], 2)/2:.1f}), in line with the literature (REFERENCES §2: GIMP converges, "
+      "error about 1e-3 at h = 1.56 m, rate about 2 on coarse meshes).")
+    w("")
+    w("With gravity in one load step, where no point crosses a cell within the step, the settlement is "
+      "within 0.03 % in every kinematics and the stress error is the 0.010 expected of piecewise-constant "
+      "cell stresses, with quadratic Newton convergence (REFERENCES §7): this verifies the finite-strain "
+      "formulation, the tangent and the three kinematics (GIMP weights equal the standard ones at the "
+      "seeded positions, where each domain fills its sub-cell).")
+    w("")
+    w("Standard MPM and DDMP do not reach the targets with load steps: points crossing cell boundaries "
+      "between steps make standard MPM's error grow with refinement instead of shrinking — the behaviour "
+      "the literature reports (REFERENCES §2: error 0.06–0.1 at every h). DDMP (seed §3.6, docs/theory.md "
+      "§8) removes the jump of a crossing point's forces and lowers the stress error, but integrating with "
+      "unevenly spread points after crossings (a cell holding three rows of points is too stiff, its "
+      "neighbour with one row too soft) keeps its settlement error above 1 %. GIMP integrates over the "
+      "points' domains, which tile the column as it deforms (cpGIMP, docs/theory.md eq. 9.4), so the "
+      "quadrature does not depend on how the points fall in the cells.")
     w("")
 
     # --- oedometer ---------------------------------------------------------------------------

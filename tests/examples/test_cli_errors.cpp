@@ -132,7 +132,8 @@ struct ModelParts {
   std::string fixities =
       "      - {boundary: bottom, fix: all}\n"
       "      - {boundary: left, fix: normal}\n";
-  std::string output;  // the whole section
+  std::string output;    // the whole section
+  std::string numerics;  // the whole section
 };
 
 std::string model_text(const ModelParts& p) {
@@ -154,7 +155,7 @@ std::string model_text(const ModelParts& p) {
          p.gravity +
          "}\n"
          "    fixities:\n" +
-         p.fixities + p.output;
+         p.fixities + p.output + p.numerics;
 }
 
 class CliErrors : public GeompmRunTest<> {
@@ -377,6 +378,32 @@ TEST_F(CliErrors, AxisymmetricMeshWithNegativeRadius) {
   EXPECT_TRUE(Contains(err, where(model, "mesh: {file", "mesh") +
                                 "axisymmetric meshes must lie in x >= 0 (x is the radius)"));
   EXPECT_TRUE(Contains(err, "is at x = -1"));
+}
+
+// GIMP weights are tensor products along grid lines (docs/theory.md §9): an imported mesh that
+// is a rectilinear grid is accepted, an L-shaped one (not a complete grid) or triangles are not.
+TEST_F(CliErrors, GimpNeedsARectilinearGrid) {
+  ModelParts parts;
+  parts.numerics = "numerics:\n  interpolation: gimp\n";
+  const std::string model = model_text(parts);
+  write("model.yaml", model);
+  write("mesh.msh", msh_text(two_quads()));
+  const auto check = geompm({"check", "model.yaml"});
+  EXPECT_TRUE(check.exited && check.exit_code == 0) << describe(check);
+
+  write("mesh.msh", msh_text(l_shape()));
+  std::string err = expect_input_error();
+  EXPECT_TRUE(Contains(err, where(model, "interpolation: gimp", "numerics.interpolation") +
+                                "gimp needs a rectilinear grid"))
+      << err;
+  EXPECT_TRUE(Contains(err, "8 nodes on 3 distinct x and 3 distinct y coordinates")) << err;
+
+  Msh triangles = two_quads();
+  triangles.gmsh_type = 2;
+  triangles.cells = {{1, 2, 5}, {1, 5, 4}, {2, 3, 6}, {2, 6, 5}};
+  write("mesh.msh", msh_text(triangles));
+  err = expect_input_error();
+  EXPECT_TRUE(Contains(err, "the mesh has tri3 cells")) << err;
 }
 
 TEST_F(CliErrors, HistoryOnABoundaryTheMeshLacks) {

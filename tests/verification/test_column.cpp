@@ -1,6 +1,7 @@
 // Elastic column under self-weight: Coombs & Augarde (2020), AMPLE §5.1
 // (shared/validation/REFERENCES.md §2), as plane strain, an axisymmetric cylinder and in 3D.
-// Runs the models of examples/column/.
+// Runs the models of examples/column/ (GIMP, numerics.interpolation: gimp), and the same models
+// with standard MPM and DDMP for comparison.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,11 +81,17 @@ TEST_P(ColumnTest, OneLoadStepMatchesTheHenckyClosedForm) {
   EXPECT_LE(r.back(), 1e-9);
 }
 
+spec::Model standard_mpm(const char* file) {
+  auto spec = testing::read_example(file);
+  spec.numerics.interpolation = spec::Interpolation::Standard;
+  return spec;
+}
+
 // Gravity ramped in 20 load steps: points cross cells. Standard MPM does not converge on this
 // problem (error about 0.06 - 0.1 at every h, REFERENCES §2); the measured errors are reported in
 // docs/validation.md. Equilibrium and mass conservation hold exactly.
 TEST_P(ColumnTest, RampedGravityKeepsEquilibriumAndStaysInTheStandardMpmBand) {
-  const auto run = testing::run_spec(testing::read_example(GetParam().file),
+  const auto run = testing::run_spec(standard_mpm(GetParam().file),
                                      std::string("column_ramped_") + GetParam().name);
   const testing::Column column;
   const auto e = column_errors(*run.model, column, GetParam().vertical);
@@ -107,7 +114,7 @@ INSTANTIATE_TEST_SUITE_P(Column, ColumnTest,
 // error of the ramped column drops below that of standard MPM (seed §3.6: "DDMP results show less
 // pollution of gradient quantities, such as stresses").
 TEST(ColumnDualDomain, StressErrorBelowStandardMpm) {
-  auto standard = testing::read_example("column/column.yaml");
+  const auto standard = standard_mpm("column/column.yaml");
   auto ddmp = standard;
   ddmp.numerics.interpolation = spec::Interpolation::DualDomain;
   const testing::Column column;
@@ -123,11 +130,12 @@ TEST(ColumnDualDomain, StressErrorBelowStandardMpm) {
   EXPECT_NEAR(b.column("base_reaction").back(), eb.total_weight, 1e-8 * eb.total_weight);
 }
 
-// E = 10 kPa: 52 % compression. The run must finish with Newton in at most 10 iterations per
-// step and exact equilibrium; its settlement error is reported in docs/validation.md.
+// E = 10 kPa: 52 % compression, standard MPM. The run must finish with Newton in at most 10
+// iterations per step and exact equilibrium; its settlement error is reported in
+// docs/validation.md.
 TEST(ColumnLargeDeformation, FinishesInEquilibrium) {
-  const auto run = testing::run_spec(testing::read_example("column/column_large_deformation.yaml"),
-                                     "column_large");
+  const auto run =
+      testing::run_spec(standard_mpm("column/column_large_deformation.yaml"), "column_large");
   testing::Column column;
   column.youngs_modulus = 10.0;
   const auto e = column_errors(*run.model, column, 1);
@@ -136,6 +144,73 @@ TEST(ColumnLargeDeformation, FinishesInEquilibrium) {
   EXPECT_NEAR(run.column("base_reaction").back(), e.total_weight, 1e-8 * e.total_weight);
   EXPECT_LE(run.summary.max_iterations_in_a_step, 10);
   EXPECT_NEAR(column.displacement(50.0), -25.9404, 1e-3);  // REFERENCES §2 table
+}
+
+// GIMP (docs/theory.md §9) on the examples as they are: gravity in 20 equal load steps, Hencky
+// law. The issue's targets: top settlement within 1 % of the closed form for E = 1 MPa and
+// within 2 % for E = 10 kPa (52 % compression, settlement -25.94 m, REFERENCES §2), in plane
+// strain, axisymmetry and 3D. Literature: GIMP converges on this problem where standard MPM does
+// not (Coombs & Augarde 2020, AMPLE §5.1; REFERENCES §2).
+struct GimpCase {
+  const char* file;
+  int vertical;
+  double youngs_modulus;
+  double settlement_target;
+  const char* name;
+};
+
+class ColumnGimpTest : public ::testing::TestWithParam<GimpCase> {};
+
+TEST_P(ColumnGimpTest, RampedGravityMeetsTheSettlementTarget) {
+  const GimpCase& c = GetParam();
+  auto spec = testing::read_example(c.file);
+  ASSERT_EQ(spec.numerics.interpolation, spec::Interpolation::Gimp);
+  spec.materials.at(0).parameters.at("E") = c.youngs_modulus;
+  const auto run = testing::run_spec(spec, std::string("column_gimp_") + c.name);
+  ASSERT_EQ(run.summary.steps, 20);
+  testing::Column column;
+  column.youngs_modulus = c.youngs_modulus;
+  const auto e = column_errors(*run.model, column, c.vertical);
+  std::printf(
+      "[column GIMP %s, E = %g kPa, 20 steps] stress error %.4f, settlement error %.3f %%\n",
+      c.name, c.youngs_modulus, e.stress_error, 100 * e.settlement_error);
+  // Issue targets: 1 % (E = 1 MPa), 2 % (E = 10 kPa); REFERENCES §2 closed form.
+  EXPECT_LT(e.settlement_error, c.settlement_target);
+  // Far below standard MPM's 0.035 - 0.08 at this mesh (docs/validation.md §2).
+  EXPECT_LT(e.stress_error, 0.01);
+  EXPECT_NEAR(run.column("base_reaction").back(), e.total_weight, 1e-8 * e.total_weight);
+  EXPECT_LE(run.summary.max_iterations_in_a_step, 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Column, ColumnGimpTest,
+    ::testing::Values(
+        GimpCase{"column/column.yaml", 1, 1000.0, 0.01, "plane_strain_1MPa"},
+        GimpCase{"column/column_axisymmetric.yaml", 1, 1000.0, 0.01, "axisymmetric_1MPa"},
+        GimpCase{"column/column_3d.yaml", 2, 1000.0, 0.01, "three_d_1MPa"},
+        GimpCase{"column/column_large_deformation.yaml", 1, 10.0, 0.02, "plane_strain_10kPa"},
+        GimpCase{"column/column_axisymmetric.yaml", 1, 10.0, 0.02, "axisymmetric_10kPa"},
+        GimpCase{"column/column_3d.yaml", 2, 10.0, 0.02, "three_d_10kPa"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// GIMP converges with the mesh (REFERENCES §2: stress error about 1e-3 at h = 1.56 m, rate about
+// 2 on coarse meshes; Coombs & Augarde 2020, AMPLE §5.1): halving h from 2 m to 1 m divides the
+// stress error by more than 2, and at h = 1 m it is within 2e-3.
+TEST(ColumnGimp, StressErrorFallsWithTheMesh) {
+  double previous = 0.0;
+  for (int cells : {26, 52}) {
+    auto spec = testing::read_example("column/column.yaml");
+    spec.mesh.generate->axes[1] = {{52.0, cells, 1.0}};
+    const auto run = testing::run_spec(spec, "column_gimp_h" + std::to_string(cells));
+    const auto e = column_errors(*run.model, testing::Column{}, 1);
+    std::printf("[column GIMP, h = %g m] stress error %.4f, settlement error %.3f %%\n",
+                52.0 / cells, e.stress_error, 100 * e.settlement_error);
+    if (previous > 0.0) {
+      EXPECT_LT(e.stress_error, previous / 2);
+      EXPECT_LT(e.stress_error, 2e-3);
+    }
+    previous = e.stress_error;
+  }
 }
 
 }  // namespace

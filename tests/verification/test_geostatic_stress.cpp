@@ -1,4 +1,4 @@
-// Initial stresses of layered level ground (docs/theory.md §9): the K0 procedure followed by
+// Initial stresses of layered level ground (docs/theory.md §10): the K0 procedure followed by
 // gravity stays in equilibrium with sigma_v = the weight of the layers above and
 // sigma_h = K0 sigma_v per layer; a ramped gravity phase (gravity loading) gives
 // sigma_h = nu / (1 - nu) sigma_v (1D compression); what the K0 procedure cannot represent is

@@ -192,7 +192,7 @@ void apply_k0_procedure(Model& model) {
                                    material_name(model, soil.material_at(top))));
 
     // Eq. 9.1-9.2: the geostatic Cauchy stress (F = I, so tau = sigma), then the elastic strain
-    // that gives it (eq. 9.3).
+    // that gives it (eq. 10.3).
     const auto k0_given = procedure.k0.find(name);
     const double k0 = k0_given != procedure.k0.end()
                           ? k0_given->second

@@ -1,4 +1,4 @@
-// The K0 procedure (docs/theory.md §9): the analysis starts from the geostatic stresses of level
+// The K0 procedure (docs/theory.md §10): the analysis starts from the geostatic stresses of level
 // ground in horizontal layers, sigma_v = -(weight of the soil above, per unit area) and
 // sigma_h = K0 sigma_v, stored in the points as the elastic strain that gives them.
 #pragma once

@@ -12,6 +12,7 @@
 #include "geompm/core/expression.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
+#include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/seeding.hpp"
 
@@ -137,6 +138,16 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   const Mesh& mesh = model->mesh;
   const int dim = mesh.dim();
   model->topology = build_mesh_topology(mesh);
+  if (spec.numerics.interpolation == spec::Interpolation::Gimp) {
+    // GIMP weights are tensor products along grid lines (docs/theory.md §9).
+    std::string why;
+    if (!find_rectilinear_grid(mesh, why))
+      throw InputError(spec.numerics.interpolation_source,
+                       fmt::format("gimp needs a rectilinear grid (axis-aligned quad4 or hex8 "
+                                   "cells on complete grid lines, uniform or graded, as the "
+                                   "built-in generator makes), but {}; use standard or ddmp",
+                                   why));
+  }
   model->locator = std::make_unique<PointLocator>(mesh);
 
   for (const auto& m : spec.materials) {
@@ -195,7 +206,8 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                          s.position.y(), s.position.z()));
         const Index material = body_material_at(spec, body, s.position(dim - 1));
         const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                          model->materials[material]->density(), c, s.xi);
+                                          model->materials[material]->density(), c, s.xi,
+                                          s.half_size);
         // Point-dependent state, e.g. a strength growing with depth.
         try {
           model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
@@ -248,7 +260,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   }
   for (const auto& history : spec.output.histories)
     check_boundary(mesh, history.boundary, history.source);
-  // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §9), before any step.
+  // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §10), before any step.
   apply_k0_procedure(*model);
   return model;
 }

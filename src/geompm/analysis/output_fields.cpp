@@ -52,7 +52,7 @@ void grid_fields(const Model& model, const GridSystem& grid, const StepResult& s
   node_fields.vectors.emplace_back("step_displacement", std::move(displacement));
   node_fields.scalars.emplace_back("mass", std::move(mass));
   if (grid.mixed()) {
-    // The pressure unknowns of the mixed formulation (compression positive; theory eq. 9.6).
+    // The pressure unknowns of the mixed formulation (compression positive; theory eq. 11.6).
     std::vector<double> pressure(n_nodes, 0.0);
     const Vector p = grid.nodal_pressure(step.displacement);
     for (Index a = 0; a < static_cast<Index>(active.size()); ++a) pressure[active[a]] = p(a);

@@ -13,7 +13,17 @@ GridSettings grid_settings(const Model& model) {
   s.kinematics = model.kinematics();
   s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * model.largest_modulus();
   s.buffer_layers = model.spec.numerics.buffer_layers;
-  s.dual_domain = model.spec.numerics.interpolation == spec::Interpolation::DualDomain;
+  switch (model.spec.numerics.interpolation) {
+    case spec::Interpolation::Standard:
+      s.interpolation = GridInterpolation::Standard;
+      break;
+    case spec::Interpolation::DualDomain:
+      s.interpolation = GridInterpolation::DualDomain;
+      break;
+    case spec::Interpolation::Gimp:
+      s.interpolation = GridInterpolation::Gimp;
+      break;
+  }
   for (const auto& material : model.spec.materials)
     s.mixed.push_back(material.formulation.value_or(model.spec.numerics.formulation) ==
                       spec::Formulation::Mixed);
@@ -226,7 +236,6 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
 void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynamic) {
   MaterialPoints& points = model_.points;
   const Index n = points.size();
-  const int dim = grid_.dim();
   // Where each point goes, found before anything is committed: under the "stop" policy a point
   // that leaves the mesh stops the run with the points still in the last converged state.
   std::vector<Location> found(n);
@@ -234,12 +243,7 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
   std::vector<char> lost(n, 0);
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
-    const auto nodes = model_.mesh.cell_nodes(points.cell[p]);
-    const auto N = grid_.shape_values(p);
-    destination[p] = points.position[p];
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int i = 0; i < dim; ++i)
-        destination[p](i) += N[a] * result.displacement(grid_.node_to_active()[nodes[a]] * dim + i);
+    destination[p] = points.position[p] + grid_.interpolate(points, p, result.displacement);
     if (auto where = model_.locator->locate(destination[p], points.cell[p]))
       found[p] = *where;
     else

@@ -165,10 +165,13 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
-  if (auto interpolation = section.find("interpolation"))
-    numerics.interpolation = interpolation->choice({"standard", "ddmp"}) == "ddmp"
-                                 ? spec::Interpolation::DualDomain
-                                 : spec::Interpolation::Standard;
+  if (auto interpolation = section.find("interpolation")) {
+    const std::string choice = interpolation->choice({"standard", "ddmp", "gimp"});
+    numerics.interpolation = choice == "ddmp"   ? spec::Interpolation::DualDomain
+                             : choice == "gimp" ? spec::Interpolation::Gimp
+                                                : spec::Interpolation::Standard;
+    numerics.interpolation_source = interpolation->where();
+  }
   if (auto stiffness = section.find("empty_cell_stiffness"))
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
   if (auto layers = section.find("buffer_layers")) {

@@ -128,7 +128,7 @@ struct Gravity {
   bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
 };
 
-/// The K0 procedure (docs/theory.md §9): the analysis starts from geostatic stresses in the
+/// The K0 procedure (docs/theory.md §10): the analysis starts from geostatic stresses in the
 /// points of `bodies`, sigma_v = weight of the soil above (with the first phase's gravity) and
 /// sigma_h = K0 sigma_v, for level ground in horizontal layers. Only in the first phase.
 struct K0Procedure {
@@ -202,15 +202,17 @@ struct Output {
 
 enum class LostPointPolicy { Stop, Remove };
 
-/// How a point sees the grid: standard MPM shape functions of its cell, or the dual domain
-/// material point method (DDMP, seed §3.6; docs/theory.md §8) with smoothed gradients.
-enum class Interpolation { Standard, DualDomain };
+/// How a point sees the grid: standard MPM shape functions of its cell, the dual domain
+/// material point method (DDMP, seed §3.6; docs/theory.md §8) with smoothed gradients, or GIMP
+/// weights averaged over the point's domain (docs/theory.md §9; rectilinear grids only).
+enum class Interpolation { Standard, DualDomain, Gimp };
 
 struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
   Formulation formulation = Formulation::Displacement;  // default of the materials
-  double empty_cell_stiffness = 1e-6;                   // relative to the largest Young's modulus
-  int buffer_layers = 1;  // layers of empty cells kept active around the body
+  SourceLocation interpolation_source;  // where it was given, for errors found with the mesh
+  double empty_cell_stiffness = 1e-6;   // relative to the largest Young's modulus
+  int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
 };

@@ -27,7 +27,7 @@ struct StressUpdate {
   Tensor4 tangent;  // d tau / d eps_tr, index (3i+j, 3k+l)
 };
 
-/// Elastic moduli of a point, for the mixed formulation's weights (docs/theory.md §9).
+/// Elastic moduli of a point, for the mixed formulation's weights (docs/theory.md §11).
 struct ElasticModuli {
   double bulk = 0.0;
   double shear = 0.0;
@@ -66,7 +66,7 @@ class Material {
   /// The elastic strain eps_e = 1/2 ln(b_e) at which the material's elastic law gives the
   /// Kirchhoff stress `kirchhoff` (with the point's `internal` variables, e.g. its own E): the
   /// inverse of the elastic law, used to start a point from a given stress (the K0 procedure,
-  /// docs/theory.md §9), since a point stores b_e and its stress follows from it. Exact for the
+  /// docs/theory.md §10), since a point stores b_e and its stress follows from it. Exact for the
   /// Hencky law of every current model. Whether that stress is admissible (inside a yield
   /// surface) is not checked here: update() at the returned strain tells. nullopt: the model
   /// cannot be started from a stress.

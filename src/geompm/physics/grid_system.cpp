@@ -6,6 +6,7 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/mixed_point_kernel.hpp"
 #include "geompm/physics/point_kernel.hpp"
 
@@ -41,6 +42,33 @@ GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
       nen_(mesh.nodes_per_cell()) {
   settings_.mixed.resize(materials_.size(), 0);
   mixed_ = std::any_of(settings_.mixed.begin(), settings_.mixed.end(), [](char m) { return m; });
+  if (settings_.interpolation == GridInterpolation::Gimp) {
+    std::string why;
+    rectilinear_ = find_rectilinear_grid(mesh, why);
+    if (!rectilinear_)
+      throw std::invalid_argument("numerics.interpolation: gimp needs a rectilinear grid, but " +
+                                  why);
+  }
+}
+
+template <class F>
+void GridSystem::for_each_weight(const MaterialPoints& points, Index p, F&& f) const {
+  // f(active node, N_a(x_p)) over the nodes point p sees: its wide stencil (DDMP, GIMP) or its
+  // cell. The one place that knows the difference, for mapping, loads and convect.
+  if (wide_stencil()) {
+    for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a) f(wide_nodes_[a], wide_N_[a]);
+    return;
+  }
+  const auto nodes = mesh_.cell_nodes(points.cell[p]);
+  for (int a = 0; a < nen_; ++a) f(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a]);
+}
+
+Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const {
+  Vec3 value = Vec3::Zero();
+  for_each_weight(points, p, [&](Index node, double N) {
+    for (int i = 0; i < dim_; ++i) value(i) += N * nodal(node * dim_ + i);
+  });
+  return value;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -59,14 +87,15 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   const Index n_cells = mesh_.num_cells();
 
   // Active cells: occupied cells, then `buffer_layers` rings of neighbours (seed §3.2: empty
-  // buffer cells catch points that move out of the body, e.g. above a free surface).
+  // buffer cells catch points that move out of the body, e.g. above a free surface). With GIMP
+  // a cell that a point's domain overlaps is occupied too: the nodes of the point's stencil are
+  // its nodes.
   std::vector<char> is_active(n_cells, 0);
+  for (Index p = 0; p < n_points; ++p) is_active[points.cell[p]] = 1;
+  if (settings_.interpolation == GridInterpolation::Gimp) build_gimp_stencils(points, is_active);
   std::vector<Index> frontier;
-  for (Index p = 0; p < n_points; ++p)
-    if (!is_active[points.cell[p]]) {
-      is_active[points.cell[p]] = 1;
-      frontier.push_back(points.cell[p]);
-    }
+  for (Index c = 0; c < n_cells; ++c)
+    if (is_active[c]) frontier.push_back(c);
   for (int layer = 0; layer < settings_.buffer_layers; ++layer) {
     std::vector<Index> next;
     for (Index c : frontier)
@@ -107,6 +136,9 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       node_to_active_[node] = static_cast<Index>(active_nodes_.size());
       active_nodes_.push_back(node);
     }
+  // Stencils were built with mesh node ids, ascending; active ids keep their order.
+  if (settings_.interpolation == GridInterpolation::Gimp)
+    for (Index& node : wide_nodes_) node = node_to_active_[node];
   colour_active_cells();
 
   // Shape functions and reference gradients at each point, on the grid of this step.
@@ -139,23 +171,25 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
   }
 
+  if (mixed_) initialise_pressure(points);
+  empty_cell_stiffness_typed<E>();
+  if (settings_.interpolation == GridInterpolation::DualDomain)
+    build_dual_domain_stencils<E>(points);
+
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_dofs = num_dofs();
   mass_ = Vector::Zero(n_dofs);
   velocity_ = Vector::Zero(n_dofs);
   acceleration_ = Vector::Zero(n_dofs);
-  for (Index p = 0; p < n_points; ++p) {
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
-    for (int a = 0; a < nen; ++a) {
-      const double w = points.mass[p] * shape_[std::size_t(p) * nen + a];
-      const Index base = node_to_active_[nodes[a]] * dim;
+  for (Index p = 0; p < n_points; ++p)
+    for_each_weight(points, p, [&](Index node, double N) {
+      const double w = points.mass[p] * N;
       for (int i = 0; i < dim; ++i) {
-        mass_(base + i) += w;
-        velocity_(base + i) += w * points.velocity[p](i);
-        acceleration_(base + i) += w * points.acceleration[p](i);
+        mass_(node * dim + i) += w;
+        velocity_(node * dim + i) += w * points.velocity[p](i);
+        acceleration_(node * dim + i) += w * points.acceleration[p](i);
       }
-    }
-  }
+    });
   const double tiny = n_dofs > 0 ? 1e-14 * std::max(mass_.maxCoeff(), 0.0) : 0.0;
   for (Index d = 0; d < n_dofs; ++d) {
     if (mass_(d) > tiny) {
@@ -166,10 +200,6 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     }
   }
 
-  if (mixed_) initialise_pressure(points);
-  empty_cell_stiffness_typed<E>();
-  if (settings_.dual_domain) build_dual_domain_stencils<E>(points);
-
   trial_.stress.resize(n_points);
   trial_.F.resize(n_points);
   trial_.be.resize(n_points);
@@ -178,7 +208,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
 }
 
 void GridSystem::initialise_pressure(const MaterialPoints& points) {
-  // The scales of the pressure unknowns (theory eq. 9.6) from the stiffest mixed soil of the
+  // The scales of the pressure unknowns (theory eq. 11.6) from the stiffest mixed soil of the
   // step, and the start value of the nodal pressures: the points' pressures (from the total
   // stress they carry) averaged onto the nodes with weights N v, so that Newton starts from the
   // last converged pressure field instead of from zero.
@@ -239,8 +269,8 @@ void GridSystem::empty_cell_stiffness_typed() {
   // (seed §3.2). It is scaled by the empty fraction (1 - fill) of the cell, so full cells get
   // none and it fades in as a cell empties. Small strain on the grid of the step, nu = 0.3.
   // In a mixed system the pressure unknowns of empty space need the same: the pressure block a
-  // full cell of the stiffest mixed soil would have (v N N^T / K, eq. 9.2), scaled by the
-  // fraction of the cell not covered by mixed points (theory eq. 9.7). Like the displacement
+  // full cell of the stiffest mixed soil would have (v N N^T / K, eq. 11.2), scaled by the
+  // fraction of the cell not covered by mixed points (theory eq. 11.7). Like the displacement
   // part it acts on the change over the step, holding it as weakly as the soil's own
   // compressibility would.
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
@@ -319,12 +349,9 @@ Vector GridSystem::external_force(const MaterialPoints& points, const Vec3& grav
       if (points.sets[p] >> forces[k].set & 1u)
         force += forces[k].force * (set_mass[k] > 0 ? points.mass[p] / set_mass[k]
                                                     : points.volume[p] / set_volume[k]);
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
-    for (int a = 0; a < nen_; ++a) {
-      const double N = shape_[std::size_t(p) * nen_ + a];
-      const Index base = node_to_active_[nodes[a]] * dim_;
-      for (int i = 0; i < dim_; ++i) f(base + i) += N * force(i);
-    }
+    for_each_weight(points, p, [&](Index node, double N) {
+      for (int i = 0; i < dim_; ++i) f(node * dim_ + i) += N * force(i);
+    });
   }
   return f;
 }
@@ -353,11 +380,11 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
     for (Index a : nodes)
       for (Index b : nodes) neighbours[node_to_active_[a]].push_back(node_to_active_[b]);
   }
-  if (settings_.dual_domain)
-    for (std::size_t p = 0; p + 1 < stencil_start_.size(); ++p)
-      for (Index a = stencil_start_[p]; a < stencil_start_[p + 1]; ++a)
-        for (Index b = stencil_start_[p]; b < stencil_start_[p + 1]; ++b)
-          neighbours[stencil_nodes_[a]].push_back(stencil_nodes_[b]);
+  if (wide_stencil())
+    for (std::size_t p = 0; p + 1 < wide_start_.size(); ++p)
+      for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a)
+        for (Index b = wide_start_[p]; b < wide_start_[p + 1]; ++b)
+          neighbours[wide_nodes_[a]].push_back(wide_nodes_[b]);
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -468,7 +495,7 @@ void GridSystem::add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& 
 template <class E>
 void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
                                         Eigen::Matrix<double, E::nodes, E::nodes>& S) const {
-  // Polynomial pressure projection (Dohrmann & Bochev 2004; theory eq. 9.5): the pressure's
+  // Polynomial pressure projection (Dohrmann & Bochev 2004; theory eq. 11.5): the pressure's
   // departure from its mean over the cell, p - Pi p, is penalised with 1/G,
   //   S = sum_p (v_p / G_p) (N_p - m)(N_p - m)^T,   m = sum_p v_p N_p / sum_p v_p,
   // over the cell's mixed points with their start-of-step volumes (so S does not depend on the
@@ -519,7 +546,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       Eigen::Matrix<double, m, 1> x_flat;  // the cell's unknowns, local order (local_dof)
       for (int l = 0; l < m; ++l) x_flat(l) = du(local_dof(active, nen, l));
       for (int a = 0; a < nen; ++a) du_local.row(a) = x_flat.template segment<dim>(a * dim);
-      Eigen::Matrix<double, nen, 1> p_local;  // nodal pressures (eq. 9.6)
+      Eigen::Matrix<double, nen, 1> p_local;  // nodal pressures (eq. 11.6)
       if constexpr (Mixed)
         for (int a = 0; a < nen; ++a) p_local(a) = pressure_start_(active[a]) + s_p * x_flat(n + a);
 
@@ -541,7 +568,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       PointStencil<E> s;
       PointKernelResult<E> r;
       [[maybe_unused]] MixedKernelResult<E::nodes, E::dim> rm;
-      const Index point_end = settings_.dual_domain ? cell_point_begin_[ci] : cell_point_end_[ci];
+      // Points with a wide stencil are assembled one by one below.
+      const Index point_end = wide_stencil() ? cell_point_begin_[ci] : cell_point_end_[ci];
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
@@ -591,8 +619,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       }
     }
   }
-  if (settings_.dual_domain && !dual_domain_point_forces<dim>(points, du, f_int, tangent))
-    return false;
+  if (wide_stencil() && !wide_stencil_point_forces<dim>(points, du, f_int, tangent)) return false;
   return admissible;
 }
 
@@ -637,10 +664,10 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     }
   }
 
-  stencil_start_.assign(n_points + 1, 0);
-  stencil_nodes_.clear();
-  stencil_N_.clear();
-  stencil_gradients_.clear();
+  wide_start_.assign(n_points + 1, 0);
+  wide_nodes_.clear();
+  wide_N_.clear();
+  wide_gradients_.clear();
   std::vector<std::pair<Index, Gradient>> entries;
   for (Index p = 0; p < n_points; ++p) {
     const auto nodes = mesh_.cell_nodes(points.cell[p]);
@@ -671,20 +698,51 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
     std::sort(entries.begin(), entries.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [i, g] : entries) {
-      stencil_nodes_.push_back(i);
+      wide_nodes_.push_back(i);
       double value = 0.0;
       for (int a = 0; a < nen; ++a)
         if (node_to_active_[nodes[a]] == i) value = N[a];
-      stencil_N_.push_back(value);
-      for (int d = 0; d < dim; ++d) stencil_gradients_.push_back(g(d));
+      wide_N_.push_back(value);
+      for (int d = 0; d < dim; ++d) wide_gradients_.push_back(g(d));
     }
-    stencil_start_[p + 1] = static_cast<Index>(stencil_nodes_.size());
+    wide_start_[p + 1] = static_cast<Index>(wide_nodes_.size());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// GIMP: weights averaged over each point's domain (docs/theory.md §9)
+// ---------------------------------------------------------------------------------------------
+
+void GridSystem::build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active) {
+  // Each point's domain: the seeded half-lengths stretched with the diagonal of F (cpGIMP,
+  // eq. 9.4), clipped to the grid (eq. 9.5); weights and gradients eq. 9.1-9.3 on the grid at
+  // the start of the step. Node ids are the mesh's here (initialise renumbers them); every
+  // cell the domain overlaps is marked occupied.
+  const RectilinearGrid& grid = *rectilinear_;
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  const Index n_points = points.size();
+  wide_start_.assign(n_points + 1, 0);
+  wide_nodes_.clear();
+  wide_N_.clear();
+  wide_gradients_.clear();
+  GimpStencil s;
+  for (Index p = 0; p < n_points; ++p) {
+    const Vec3 half =
+        particle_half_lengths(points.initial_half_size[p], points.deformation_gradient[p], dim_);
+    gimp_stencil(grid, points.position[p], half, points.cell[p], axisymmetric, s);
+    wide_nodes_.insert(wide_nodes_.end(), s.nodes.begin(), s.nodes.end());
+    wide_N_.insert(wide_N_.end(), s.N.begin(), s.N.end());
+    wide_gradients_.insert(wide_gradients_.end(), s.gradients.begin(), s.gradients.end());
+    wide_start_[p + 1] = static_cast<Index>(wide_nodes_.size());
+    for (int k = s.first_cell[2]; k <= s.last_cell[2]; ++k)
+      for (int j = s.first_cell[1]; j <= s.last_cell[1]; ++j)
+        for (int i = s.first_cell[0]; i <= s.last_cell[0]; ++i) is_active[grid.cell(i, j, k)] = 1;
   }
 }
 
 template <int Dim>
-bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Vector& du,
-                                          Vector& f_int, SparseMatrix* tangent) {
+bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const Vector& du,
+                                           Vector& f_int, SparseMatrix* tangent) {
   // Points one after the other (their stencils overlap across cells of one colour).
   using Dynamic = Stencil<Eigen::Dynamic, Dim>;
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
@@ -698,11 +756,11 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
   for (Index p = 0; p < points.size(); ++p) {
-    const Index begin = stencil_start_[p], ns = stencil_start_[p + 1] - begin;
-    const auto stencil = stencil_nodes_.begin() + begin;
-    s.N = Eigen::Map<const Eigen::VectorXd>(stencil_N_.data() + begin, ns);
+    const Index begin = wide_start_[p], ns = wide_start_[p + 1] - begin;
+    const auto stencil = wide_nodes_.begin() + begin;
+    s.N = Eigen::Map<const Eigen::VectorXd>(wide_N_.data() + begin, ns);
     s.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
-        stencil_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
+        wide_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
     du_local.resize(ns, Dim);
     for (Index a = 0; a < ns; ++a)
       for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil[a] * Dim + i);
@@ -712,7 +770,8 @@ bool GridSystem::dual_domain_point_forces(const MaterialPoints& points, const Ve
     f_local.resize(local);
     if (tangent) K_local.setZero(local, local);
     if (mixed) {
-      // N vanishes outside the point's cell, so its pressure is that of its cell (eq. 9.1).
+      // The pressure is interpolated with the point's own weights (eq. 11.1): its cell's (DDMP)
+      // or its domain's (GIMP).
       p_local.resize(ns);
       for (Index a = 0; a < ns; ++a)
         p_local(a) = pressure_start_(stencil[a]) + pressure_scale_ * du(pressure_dof(stencil[a]));
@@ -772,21 +831,19 @@ void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector&
 template <class E>
 void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
                                const Vector& acceleration, double dt, bool dynamic) const {
-  constexpr int nen = E::nodes, dim = E::dim;
+  constexpr int dim = E::dim;
   const Index n_points = points.size();
 #pragma omp parallel for schedule(static) if (n_points > 4096)
   for (Index p = 0; p < n_points; ++p) {
-    const auto nodes = mesh_.cell_nodes(points.cell[p]);
+    // Eq. 7.1 with the point's weights of this step (cell or wide stencil).
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero(), a = Vec3::Zero();
-    for (int k = 0; k < nen; ++k) {
-      const double N = shape_[std::size_t(p) * nen + k];
-      const Index base = node_to_active_[nodes[k]] * dim;
+    for_each_weight(points, p, [&](Index node, double N) {
       for (int i = 0; i < dim; ++i) {
-        dx(i) += N * du(base + i);
-        dv(i) += N * (velocity(base + i) - velocity_(base + i));
-        a(i) += N * acceleration(base + i);
+        dx(i) += N * du(node * dim + i);
+        dv(i) += N * (velocity(node * dim + i) - velocity_(node * dim + i));
+        a(i) += N * acceleration(node * dim + i);
       }
-    }
+    });
     points.position[p] += dx;
     points.displacement[p] += dx;
     points.phase_displacement[p] += dx;

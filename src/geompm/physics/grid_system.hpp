@@ -4,10 +4,10 @@
 //
 // Unknowns are the nodal displacement increments of the step, numbered node-major over the
 // active nodes (index = active node * dim + component). With the mixed p-u formulation
-// (docs/theory.md §9) every active node also carries a pressure unknown, numbered after all
+// (docs/theory.md §11) every active node also carries a pressure unknown, numbered after all
 // displacements (index = active nodes * dim + active node): the pressure's change over the step
 // divided by a scale s = G/h, so that it is a length like the displacements and its equation,
-// multiplied by s, a force (theory eq. 9.6) - one residual norm and one correction norm serve. The
+// multiplied by s, a force (theory eq. 11.6) - one residual norm and one correction norm serve. The
 // tangent is assembled only for the free unknowns, into a pattern built once per step; assembly
 // runs in parallel over cells of one colour at a time (no two cells of a colour share a node),
 // which also makes the sums independent of the thread count.
@@ -15,11 +15,13 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/physics/finite_strain.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
@@ -28,12 +30,16 @@ namespace geompm {
 
 struct PointStartState;  // physics/point_kernel.hpp
 
+/// How points see the grid: the shape functions of their cell (standard MPM), DDMP gradients
+/// (docs/theory.md §8) or GIMP weights over the point's domain (§9; rectilinear grids only).
+enum class GridInterpolation { Standard, DualDomain, Gimp };
+
 struct GridSettings {
   Kinematics kinematics = Kinematics::PlaneStrain;
   double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
   int buffer_layers = 1;            // layers of empty cells activated around occupied cells
-  bool dual_domain = false;         // DDMP gradients (docs/theory.md §8) instead of standard MPM
-  /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §9). The
+  GridInterpolation interpolation = GridInterpolation::Standard;
+  /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The
   /// system has pressure unknowns when any material is mixed.
   std::vector<char> mixed;
 };
@@ -47,6 +53,7 @@ struct PointSetForce {
 
 class GridSystem {
  public:
+  /// Throws std::invalid_argument if GIMP is asked for on a mesh that is not a rectilinear grid.
   GridSystem(const Mesh& mesh, const MeshTopology& topology,
              const std::vector<const Material*>& materials, const GridSettings& settings);
 
@@ -94,7 +101,7 @@ class GridSystem {
   /// The unknown that carries the pressure of active node a (mixed systems only).
   Index pressure_dof(Index a) const { return static_cast<Index>(active_nodes_.size()) * dim_ + a; }
   /// Nodal pressures (compression positive) per active node for the unknowns `x` of the step
-  /// (dof-indexed, as passed to internal_force): p = p_start + s x_p (theory eq. 9.6).
+  /// (dof-indexed, as passed to internal_force): p = p_start + s x_p (theory eq. 11.6).
   Vector nodal_pressure(const Vector& x) const;
   Index num_free() const { return num_free_; }
   const std::vector<Index>& active_nodes() const { return active_nodes_; }
@@ -110,10 +117,12 @@ class GridSystem {
   const std::vector<double>& cell_fill() const { return cell_fill_; }
   /// A length per active cell: its size (area or volume)^(1/dim), for penalty scaling.
   double cell_size(Index p) const { return cell_size_[p]; }
-  /// Shape values N_a of point p at its cell's nodes (valid after initialise()).
-  std::span<const double> shape_values(Index p) const {
-    return {shape_.data() + std::size_t(p) * nen_, std::size_t(nen_)};
-  }
+  /// sum_a N_a(x_p) u_a: a nodal vector field (dof-indexed) at point p, with the point's
+  /// weights of this step (its cell's shape functions, or its wide stencil). Valid after
+  /// initialise(), before the points are relocated.
+  Vec3 interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const;
+  /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
+  bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
 
  private:
   template <class E>
@@ -144,11 +153,14 @@ class GridSystem {
   void add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
                          const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
                          Stiffness& K);
+  template <class F>
+  void for_each_weight(const MaterialPoints& points, Index p, F&& f) const;
+  void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
   template <class E>
   void build_dual_domain_stencils(const MaterialPoints& points);
   template <int Dim>
-  bool dual_domain_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
-                                SparseMatrix* tangent);
+  bool wide_stencil_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
+                                 SparseMatrix* tangent);
   void colour_active_cells();
   PointStartState start_state(const MaterialPoints& points, Index p) const;
   void store_trial(Index p, const FiniteStrainState& state, double volume);
@@ -171,10 +183,13 @@ class GridSystem {
   std::vector<double> gradients_;  // nen * dim per point (dN/dX at the start of the step)
   Vector mass_, velocity_, acceleration_;
 
-  // DDMP: each point's stencil (active nodes, sorted), shape values (zero outside its cell) and
-  // smoothed reference gradients (dim per entry); point p spans [stencil_start_[p], ...[p+1]).
-  std::vector<Index> stencil_start_, stencil_nodes_;
-  std::vector<double> stencil_N_, stencil_gradients_;
+  std::optional<RectilinearGrid> rectilinear_;  // GIMP only
+
+  // Wide stencils (DDMP, GIMP): each point's nodes (active ids, ascending), weights N (DDMP:
+  // the cell's shape values, zero outside it) and reference gradients (dim per entry); point p
+  // spans [wide_start_[p], wide_start_[p + 1]).
+  std::vector<Index> wide_start_, wide_nodes_;
+  std::vector<double> wide_N_, wide_gradients_;
 
   std::vector<double> target_stiffness_;  // per point; empty when no point has a target
   std::vector<Vec3> target_;
@@ -184,9 +199,9 @@ class GridSystem {
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
   std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0
 
-  // Mixed p-u (docs/theory.md §9).
+  // Mixed p-u (docs/theory.md §11).
   bool mixed_ = false;
-  double pressure_scale_ = 1.0;  // s = G / h (eq. 9.6)
+  double pressure_scale_ = 1.0;  // s = G / h (eq. 11.6)
   double reference_bulk_ = 1.0;  // K of the pressure regularisation of empty space
   Vector pressure_start_;        // nodal pressure at the start of the step
   int cell_dofs() const { return nen_ * dim_ + (mixed_ ? nen_ : 0); }

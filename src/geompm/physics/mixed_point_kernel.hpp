@@ -1,13 +1,13 @@
-// The mixed displacement-pressure (p-u) kernel at one point (docs/theory.md §9; after Brezzi &
+// The mixed displacement-pressure (p-u) kernel at one point (docs/theory.md §11; after Brezzi &
 // Fortin 1991, as in the seed paper's Introduction): the point's mean stress is replaced by an
 // independent, continuous pressure field p^ = N p (compression positive), and the material's own
 // pressure is tied to it only weakly, so that a nearly incompressible material does not lock.
 //
-//   equilibrium   f_u = v B^T sigma~,   sigma~ = dev sigma - p^ I              (eq. 9.1)
-//   pressure      g   = v N (p^ - p_mat) / K,   p_mat = -tr(sigma) / 3          (eq. 9.2)
+//   equilibrium   f_u = v B^T sigma~,   sigma~ = dev sigma - p^ I              (eq. 11.1)
+//   pressure      g   = v N (p^ - p_mat) / K,   p_mat = -tr(sigma) / 3          (eq. 11.2)
 //
 // with sigma, p_mat from the material at the point's full deformation, K the point's elastic bulk
-// modulus and v its current volume. The cell-wise pressure stabilisation (eq. 9.5) is added by
+// modulus and v its current volume. The cell-wise pressure stabilisation (eq. 11.5) is added by
 // the grid, not here: it couples the points of a cell.
 #pragma once
 
@@ -45,14 +45,14 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   const double bulk = p.material->elastic_moduli(out.u.state.internal).bulk;
   const double v = out.u.volume;
 
-  out.total_stress = sigma + (p_mat - p_hat) * Mat3::Identity();  // eq. 9.1
+  out.total_stress = sigma + (p_mat - p_hat) * Mat3::Identity();  // eq. 11.1
   Eigen::Matrix<double, nc, 1> sigma_total;
   for (int c = 0; c < nc; ++c) sigma_total(c) = out.total_stress(GC::row[c], GC::col[c]);
   out.u.internal_force.noalias() = v * (B.transpose() * sigma_total);
-  out.pressure_residual = (v * (p_hat - p_mat) / bulk) * s.N;  // eq. 9.2
+  out.pressure_residual = (v * (p_hat - p_mat) / bulk) * s.N;  // eq. 11.2
   if (!want_tangent) return true;
 
-  // Tangent (eqs. 9.3-9.4). a = a_mat - sigma_il delta_jk (eq. 3.9); its material part
+  // Tangent (eqs. 11.3-9.4). a = a_mat - sigma_il delta_jk (eq. 3.9); its material part
   // a_bar = a + sigma_il delta_jk is the rate of tau / J, whose trace rows give the rate of the
   // material pressure. The mixed spatial tangent is
   //   a~_ijkl = a_bar_ijkl - 1/3 delta_ij a_bar_mmkl - p^ delta_ij delta_kl - sigma~_il delta_jk.
@@ -77,7 +77,7 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   const Eigen::Matrix<double, nc, n_dofs> AB = a_mixed.lazyProduct(B);
   out.u.stiffness.noalias() = v * B.transpose().lazyProduct(AB);
 
-  // The divergence operator: the trace rows of B (theory eq. 9.4).
+  // The divergence operator: the trace rows of B (theory eq. 11.4).
   const Eigen::Matrix<double, 1, n_dofs> div = identity * B;
   out.K_up.noalias() = -v * div.transpose() * s.N.transpose();
   // d(v p^ - v p_mat) = v p^ div du + v/3 a_bar_mmkl grad(du)_kl  (p^ held).

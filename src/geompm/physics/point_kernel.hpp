@@ -36,7 +36,8 @@ struct GradientComponents<3> {
 /// What a point knows of the grid during a step: shape values and reference gradients at the
 /// point's nodes, on the grid as it was at the start of the step (fixed within the step, so
 /// computed once per step). NS nodes: the cell's (standard MPM, compile-time size) or a wider,
-/// run-time sized stencil (DDMP, where N is zero at nodes outside the point's cell).
+/// run-time sized stencil (DDMP, where N is zero at nodes outside the point's cell; GIMP, where
+/// N and its gradient are averages over the point's domain, docs/theory.md §9).
 template <int NS, int Dim>
 struct Stencil {
   Eigen::Matrix<double, NS, 1> N;

@@ -5,7 +5,7 @@
 namespace geompm {
 
 Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x, double vol,
-                          double density, Index cell_index, const Vec3& xi) {
+                          double density, Index cell_index, const Vec3& xi, const Vec3& half_size) {
   const Index next_id = id.empty() ? 0 : id.back() + 1;
   id.push_back(next_id);
   body.push_back(body_index);
@@ -20,6 +20,7 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
   mass.push_back(vol * density);
   volume.push_back(vol);
   initial_volume.push_back(vol);
+  initial_half_size.push_back(half_size);
   stress.push_back(Mat3::Zero());
   deformation_gradient.push_back(Mat3::Identity());
   elastic_left_cauchy_green.push_back(Mat3::Identity());
@@ -47,6 +48,7 @@ void for_each_field(MaterialPoints& p, Fn&& fn) {
   fn(p.mass);
   fn(p.volume);
   fn(p.initial_volume);
+  fn(p.initial_half_size);
   fn(p.stress);
   fn(p.deformation_gradient);
   fn(p.elastic_left_cauchy_green);

@@ -30,6 +30,7 @@ struct MaterialPoints {
   std::vector<double> mass;
   std::vector<double> volume;  // current; per radian in axisymmetry
   std::vector<double> initial_volume;
+  std::vector<Vec3> initial_half_size;          // half-lengths of the seeded domain per axis (GIMP)
   std::vector<Mat3> stress;                     // Cauchy, tension positive
   std::vector<Mat3> deformation_gradient;       // total F
   std::vector<Mat3> elastic_left_cauchy_green;  // b_e = F_e F_e^T
@@ -39,9 +40,10 @@ struct MaterialPoints {
 
   Index size() const { return static_cast<Index>(id.size()); }
 
-  /// Appends one point with zero velocity, zero stress and F = b_e = I.
+  /// Appends one point with zero velocity, zero stress and F = b_e = I; `half_size`: the
+  /// half-lengths along the axes of the region the point represents (its GIMP domain).
   Index add(Index body_index, Index material_index, const Vec3& x, double volume, double density,
-            Index cell, const Vec3& xi);
+            Index cell, const Vec3& xi, const Vec3& half_size);
 
   /// Removes the points whose flag is set, keeping the order of the rest.
   void remove(const std::vector<char>& flag);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "geompm/mesh/cell_geometry.hpp"
@@ -76,15 +77,28 @@ double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X, const ty
   return d;
 }
 
-template <class E>
+// corners: the vertices of the point's sub-cell in reference coordinates. Its half-size is half
+// the extent of their images along each axis: the exact half-lengths of the sub-cell on an
+// axis-aligned cell, the initial particle domain of GIMP (docs/theory.md eq. 9.4).
+template <class E, class Corners>
 SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typename E::Local& xi,
-                     double volume) {
+                     double volume, const Corners& corners) {
   SeedPoint p;
   p.xi = Vec3::Zero();
   p.xi.head<E::dim>() = xi;
   p.position = Vec3::Zero();
   p.position.head<E::dim>() = X.transpose() * E::shape(xi);
   p.volume = volume;
+  Eigen::Matrix<double, E::dim, 1> lo, hi;
+  lo.setConstant(std::numeric_limits<double>::max());
+  hi = -lo;
+  for (const auto& corner : corners) {
+    const Eigen::Matrix<double, E::dim, 1> x = X.transpose() * E::shape(corner);
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  p.half_size = Vec3::Zero();
+  p.half_size.head<E::dim>() = 0.5 * (hi - lo);
   return p;
 }
 
@@ -115,7 +129,13 @@ std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E:
       }
       volume += w * volume_density<E>(X, xi, axisymmetric);
     }
-    out.push_back(make_point<E>(X, centre, volume));
+    std::vector<typename E::Local> corners;
+    for (int c = 0; c < (1 << dim); ++c) {
+      typename E::Local corner;
+      for (int d = 0; d < dim; ++d) corner(d) = centre(d) + (c >> d & 1 ? 0.5 : -0.5) * h;
+      corners.push_back(corner);
+    }
+    out.push_back(make_point<E>(X, centre, volume, corners));
   }
   return out;
 }
@@ -144,7 +164,7 @@ std::vector<SeedPoint> seed_triangle(const Eigen::Matrix<double, E::nodes, E::di
       const Eigen::Vector2d xi = bary[q][0] * t[0] + bary[q][1] * t[1] + bary[q][2] * t[2];
       volume += w[q] * area * volume_density<E>(X, xi, axisymmetric);
     }
-    out.push_back(make_point<E>(X, (t[0] + t[1] + t[2]) / 3.0, volume));
+    out.push_back(make_point<E>(X, (t[0] + t[1] + t[2]) / 3.0, volume, t));
   }
   return out;
 }
@@ -159,7 +179,8 @@ std::vector<SeedPoint> seed_tetrahedron(const Eigen::Matrix<double, E::nodes, E:
     const double reference_volume = std::abs(edges.determinant()) / 6.0;
     const Eigen::Vector3d centre = (t[0] + t[1] + t[2] + t[3]) / 4.0;
     // The Tet4 map is affine: the density is constant.
-    out.push_back(make_point<E>(X, centre, reference_volume * volume_density<E>(X, centre, false)));
+    out.push_back(
+        make_point<E>(X, centre, reference_volume * volume_density<E>(X, centre, false), t));
   }
   return out;
 }

@@ -14,9 +14,10 @@
 namespace geompm {
 
 struct SeedPoint {
-  Vec3 xi;        // reference coordinates in the cell
-  Vec3 position;  // physical position
-  double volume;  // per radian in axisymmetry
+  Vec3 xi;         // reference coordinates in the cell
+  Vec3 position;   // physical position
+  double volume;   // per radian in axisymmetry
+  Vec3 half_size;  // half the extent of the point's sub-cell along each axis (GIMP domain)
 };
 
 /// The allowed counts for a cell type (for messages and the model reader).

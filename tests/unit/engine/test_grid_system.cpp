@@ -1,7 +1,9 @@
 // The assembled tangent of the grid system against a finite difference of its internal force,
-// for standard MPM and DDMP gradients, in plane strain and axisymmetry, with points spread over
-// several cells, in the displacement and the mixed p-u formulation (docs/theory.md eqs. 3.9,
-// 6.1, 8.2, 9.3-9.7).
+// for standard MPM, DDMP and GIMP, in plane strain, axisymmetry and 3D, with points spread over
+// several cells and some held by prescribed-motion springs, in the displacement and the mixed p-u
+// formulation (docs/theory.md eqs. 3.9, 5.1, 6.1, 8.2, 9.1-9.5, 11.1-11.7). GIMP points are moved
+// off their seeding positions first, so that their domains straddle cell boundaries (and the axis
+// and mesh boundary, where they are clipped).
 #include <gtest/gtest.h>
 
 #include <map>
@@ -20,7 +22,25 @@ struct MaterialChoice {
   bool mixed = false;
 };
 
-void check_assembled_tangent(const std::string& example, bool dual_domain,
+/// Moves every point by up to `fraction` of its domain half-size along each axis (in the
+/// mesh), and relocates it.
+void scatter_points(Model& model, double fraction) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto& p = model.points;
+  for (Index i = 0; i < p.size(); ++i) {
+    Vec3 x = p.position[i];
+    for (int d = 0; d < model.mesh.dim(); ++d)
+      x(d) += fraction * p.initial_half_size[i](d) * u(rng);
+    const auto where = model.locator->locate(x, p.cell[i]);
+    ASSERT_TRUE(where);
+    p.position[i] = x;
+    p.cell[i] = where->cell;
+    p.local[i] = where->xi;
+  }
+}
+
+void check_assembled_tangent(const std::string& example, GridInterpolation interpolation,
                              const MaterialChoice* choice = nullptr) {
   auto spec = testing::read_example(example);
   if (choice)
@@ -29,13 +49,24 @@ void check_assembled_tangent(const std::string& example, bool dual_domain,
       material.parameters = choice->parameters;
     }
   auto model = build_model(spec);
+  if (interpolation == GridInterpolation::Gimp) scatter_points(*model, 0.6);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
-  settings.dual_domain = dual_domain;
+  settings.interpolation = interpolation;
   if (choice) settings.mixed.assign(spec.materials.size(), choice->mixed);
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
+  // Prescribed-motion springs on every fifth point (eq. 5.1), through the point's weights.
+  const Index n_points = model->points.size();
+  std::vector<double> stiffness(n_points, 0.0);
+  std::vector<Vec3> target(n_points, Vec3(1e-3, -2e-3, 5e-4));
+  std::vector<unsigned char> mask(n_points, 0);
+  for (Index p = 0; p < n_points; p += 5) {
+    stiffness[p] = 10 * model->largest_modulus();
+    mask[p] = p % 2 ? 2 : 7;
+  }
+  grid.set_point_targets(stiffness, target, mask);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
 
   std::mt19937 rng(7);
@@ -59,13 +90,13 @@ void check_assembled_tangent(const std::string& example, bool dual_domain,
     worst = std::max(
         worst, (dense.col(grid.free_index()[j]) - column).norm() / std::max(column.norm(), 1e-12));
   }
-  EXPECT_LT(worst, 1e-5) << example << (dual_domain ? " (DDMP)" : " (standard)")
+  EXPECT_LT(worst, 1e-5) << example << " (interpolation " << int(interpolation) << ")"
                          << (choice ? " " + choice->model : "");
 }
 
 // Plastic flow and a non-zero pressure field in the mixed formulation: random increments of the
 // scaled pressure unknowns as large as the displacements give pressures of the order of the
-// stresses, so every block of eqs. 9.3-9.4 and the stabilisation (9.5) is exercised.
+// stresses, so every block of eqs. 11.3-11.4 and the stabilisation (11.5) is exercised.
 const MaterialChoice mixed_tresca{
     "tresca", {{"su", 5.0}, {"E", 1e4}, {"nu", 0.49}, {"density", 1.0}}, true};
 const MaterialChoice mixed_mohr_coulomb{
@@ -74,53 +105,143 @@ const MaterialChoice mixed_mohr_coulomb{
     true};
 
 TEST(GridSystemTangent, MixedTrescaPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", false, &mixed_tresca);
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &mixed_tresca);
 }
 TEST(GridSystemTangent, MixedMohrCoulombPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", false, &mixed_mohr_coulomb);
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
+                          &mixed_mohr_coulomb);
 }
 TEST(GridSystemTangent, MixedTrescaAxisymmetric) {
-  check_assembled_tangent("column/column_axisymmetric.yaml", false, &mixed_tresca);
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
+                          &mixed_tresca);
 }
 TEST(GridSystemTangent, MixedTrescaDualDomain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", true, &mixed_tresca);
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain, &mixed_tresca);
+}
+TEST(GridSystemTangent, MixedMohrCoulombGimp) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp, &mixed_mohr_coulomb);
 }
 TEST(GridSystemTangent, MixedMohrCoulomb3D) {
-  check_assembled_tangent("column/column_3d.yaml", false, &mixed_mohr_coulomb);
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
+                          &mixed_mohr_coulomb);
 }
 
 TEST(GridSystemTangent, StandardPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", false);
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard);
 }
 TEST(GridSystemTangent, DualDomainPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", true);
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain);
 }
 TEST(GridSystemTangent, DualDomainAxisymmetric) {
-  check_assembled_tangent("column/column_axisymmetric.yaml", true);
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::DualDomain);
+}
+TEST(GridSystemTangent, GimpPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp);
+}
+TEST(GridSystemTangent, GimpAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Gimp);
+}
+TEST(GridSystemTangent, GimpThreeD) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Gimp);
 }
 
-// DDMP gradients reproduce a linear displacement field exactly: a uniform strain increment
-// gives the same stress at every point, as with standard MPM.
-TEST(GridSystemDualDomain, LinearFieldGivesUniformStress) {
+// DDMP gradients and GIMP weights reproduce a linear displacement field exactly: a uniform
+// strain increment gives the same stress at every point, as with standard MPM, and convect
+// moves every point with the field.
+void check_linear_field(GridInterpolation interpolation) {
   auto spec = testing::read_example("oedometer/oedometer.yaml");
   auto model = build_model(spec);
+  if (interpolation == GridInterpolation::Gimp) scatter_points(*model, 0.6);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
-  settings.dual_domain = true;
+  settings.interpolation = interpolation;
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   Vector du(grid.num_dofs());
+  auto field = [](const Vec3& x) {
+    return Vec3(0.002 * x.x() + 0.001 * x.y() + 1e-3, -0.003 * x.y() - 2e-3, 0.0);
+  };
   for (Index a = 0; a < static_cast<Index>(grid.active_nodes().size()); ++a) {
-    const Vec3& x = model->mesh.nodes[grid.active_nodes()[a]];
-    du(2 * a) = 0.002 * x.x() + 0.001 * x.y();
-    du(2 * a + 1) = -0.003 * x.y();
+    const Vec3 u = field(model->mesh.nodes[grid.active_nodes()[a]]);
+    du(2 * a) = u.x();
+    du(2 * a + 1) = u.y();
   }
   Vector f;
   ASSERT_TRUE(grid.internal_force(model->points, du, f, nullptr));
   const Mat3 first = grid.trial().stress.front();
   for (const Mat3& s : grid.trial().stress) EXPECT_LT((s - first).norm(), 1e-9 * first.norm());
   EXPECT_GT(first.norm(), 1.0);
+
+  const std::vector<Vec3> before = model->points.position;
+  grid.convect(model->points, du, du, Vector::Zero(du.size()), 1.0, false);
+  for (Index p = 0; p < model->points.size(); ++p)
+    EXPECT_LT((model->points.position[p] - before[p] - field(before[p])).norm(), 1e-14);
+}
+
+TEST(GridSystemDualDomain, LinearFieldGivesUniformStress) {
+  check_linear_field(GridInterpolation::DualDomain);
+}
+TEST(GridSystemGimp, LinearFieldGivesUniformStress) { check_linear_field(GridInterpolation::Gimp); }
+
+// GIMP maps mass, momentum and gravity through the wide stencil: nothing is lost, and a node
+// outside a point's cell gets its share.
+TEST(GridSystemGimp, MapsMassAndLoadsThroughTheStencil) {
+  auto spec = testing::read_example("column/column.yaml");
+  auto model = build_model(spec);
+  scatter_points(*model, 0.6);
+  for (Index p = 0; p < model->points.size(); ++p) model->points.velocity[p] = Vec3(0.0, 2.0, 0.0);
+  GridSettings settings;
+  settings.kinematics = spec.kinematics;
+  settings.interpolation = GridInterpolation::Gimp;
+  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  grid.initialise(model->points);
+  double mass = 0.0;
+  for (Index p = 0; p < model->points.size(); ++p) mass += model->points.mass[p];
+  const Vector& m = grid.mass();
+  double mx = 0.0, my = 0.0, momentum = 0.0;
+  for (Index d = 0; d < m.size(); d += 2) {
+    mx += m(d);
+    my += m(d + 1);
+    momentum += m(d + 1) * grid.velocity()(d + 1);
+  }
+  EXPECT_NEAR(mx, mass, 1e-12 * mass);
+  EXPECT_NEAR(my, mass, 1e-12 * mass);
+  EXPECT_NEAR(momentum, 2.0 * mass, 1e-12 * mass);
+  const Vector f = grid.external_force(model->points, Vec3(0.0, -10.0, 0.0), {});
+  double fy = 0.0;
+  for (Index d = 1; d < f.size(); d += 2) fy += f(d);
+  EXPECT_NEAR(fy, -10.0 * mass, 1e-12 * mass);
+  // Nodes with mass lie in more cells than the points occupy: the stencils reach past the cells.
+  int nodes_with_mass = 0;
+  for (Index d = 0; d < m.size(); d += 2) nodes_with_mass += m(d) > 0.0;
+  std::vector<char> occupied(model->mesh.num_cells(), 0);
+  for (Index c : model->points.cell) occupied[c] = 1;
+  std::vector<char> node_of_occupied(model->mesh.num_nodes(), 0);
+  for (Index c = 0; c < model->mesh.num_cells(); ++c)
+    if (occupied[c])
+      for (Index n : model->mesh.cell_nodes(c)) node_of_occupied[n] = 1;
+  int count = 0;
+  for (char flag : node_of_occupied) count += flag;
+  EXPECT_GT(nodes_with_mass, count);
+}
+
+// GIMP on a mesh that is not a rectilinear grid is refused with the reason.
+TEST(GridSystemGimp, RefusesAMeshThatIsNotARectilinearGrid) {
+  auto spec = testing::read_example("column/column.yaml");
+  spec.mesh.generate->cell_type = CellType::Tri3;
+  spec.numerics.interpolation = spec::Interpolation::Standard;  // else build_model refuses it
+  auto model = build_model(spec);
+  GridSettings settings;
+  settings.interpolation = GridInterpolation::Gimp;
+  try {
+    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    ADD_FAILURE() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("numerics.interpolation: gimp needs a rectilinear grid"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

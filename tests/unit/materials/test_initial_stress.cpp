@@ -1,4 +1,4 @@
-// Starting a point from a given stress (the K0 procedure, docs/theory.md §9): the elastic strain
+// Starting a point from a given stress (the K0 procedure, docs/theory.md §10): the elastic strain
 // a material returns for a Kirchhoff stress gives that stress back through update(), for every
 // model, for stresses with any principal axes; Tresca uses the point's own E; Mohr-Coulomb's
 // default K0 is Jaky's 1 - sin(phi).
