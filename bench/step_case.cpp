@@ -102,7 +102,7 @@ void StepCase::evaluate() {
     for (std::size_t n = 0; n < grid_->active_nodes().size(); ++n)
       du_(Index(n) * dim + 1) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
   }
-  grid_->internal_force(model_->points, du_, f_int_, &tangent_);
+  grid_->internal_force(model_->points, du_, f_int_, &grid_->tangent_storage());
   if (memory_.grid == 0) memory_.grid = double(heap_in_use() - heap_before_grid_);
   evaluated_ = true;
 }
@@ -110,7 +110,7 @@ void StepCase::evaluate() {
 void StepCase::analyse() {
   if (!evaluated_) evaluate();
   if (!solver_) solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
-  solver_->analyze(tangent_);
+  solver_->analyze(grid_->tangent_storage());
   analysed_ = true;
 }
 
@@ -124,7 +124,7 @@ void StepCase::factorize_and_solve() {
     for (Index d = 0; d < grid_->num_dofs(); ++d)
       if (grid_->free_index()[d] >= 0) residual_(grid_->free_index()[d]) = r(d);
   }
-  solver_->factorize(tangent_);
+  solver_->factorize(grid_->tangent_storage());
   const Vector dx = solver_->solve(residual_);
   if (memory_.solver == 0) memory_.solver = double(heap_in_use() - before);
   factorised_ = true;
@@ -190,7 +190,6 @@ void StepCase::release_stages() {
   undo_convect();
   grid_.reset();
   solver_.reset();
-  tangent_ = SparseMatrix();
   f_ext_ = f_int_ = du_ = residual_ = Vector();
   constrained_dofs_ = {};
   saved_position_ = {};

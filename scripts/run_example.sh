@@ -4,7 +4,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
-example=examples/column/column.yaml
+example=examples/strip_footing/strip_footing.yaml
 ./build/geompm check "$example"
-./build/geompm run "$example" --output results/column
-echo "ParaView: results/column/points.pvd; plot: results/column/settlement.png"
+./build/geompm run "$example" --output results/strip_footing
+echo "ParaView: results/strip_footing/points.pvd (grid.pvd: nodal pressure);" \
+  "plot: results/strip_footing/load_settlement.png"

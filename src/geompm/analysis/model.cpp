@@ -205,9 +205,9 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                          body.name, spec.bodies[other].name, s.position.x(),
                                          s.position.y(), s.position.z()));
         const Index material = body_material_at(spec, body, s.position(dim - 1));
-        const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                          model->materials[material]->density(), c, s.xi,
-                                          s.half_size);
+        const Index p =
+            model->points.add(static_cast<Index>(b), material, s.position, s.volume,
+                              model->materials[material]->density(), c, s.xi, s.half_size);
         // Point-dependent state, e.g. a strength growing with depth.
         try {
           model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
@@ -283,8 +283,10 @@ std::string describe_model(const Model& model) {
   for (std::size_t m = 0; m < spec.materials.size(); ++m) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
-    out += fmt::format("material   {}: {}{}\n", spec.materials[m].name, spec.materials[m].model,
-                       params);
+    const bool mixed = spec.materials[m].formulation.value_or(spec.numerics.formulation) ==
+                       spec::Formulation::Mixed;
+    out += fmt::format("material   {}: {}{}{}\n", spec.materials[m].name, spec.materials[m].model,
+                       params, mixed ? " (mixed p-u)" : "");
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;

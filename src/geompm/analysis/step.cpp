@@ -196,7 +196,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
   Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
-  result.newton = solve_newton(problem, solver_, settings, x, tangent_);
+  result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
   if (!result.newton.converged) return result;
   result.converged = true;
 

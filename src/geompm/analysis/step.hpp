@@ -46,7 +46,6 @@ class StepSolver {
   Model& model_;
   LinearSolver& solver_;
   GridSystem grid_;
-  SparseMatrix tangent_;
 };
 
 }  // namespace geompm

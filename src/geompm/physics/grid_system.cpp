@@ -199,12 +199,6 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       velocity_(d) = acceleration_(d) = 0.0;
     }
   }
-
-  trial_.stress.resize(n_points);
-  trial_.F.resize(n_points);
-  trial_.be.resize(n_points);
-  trial_.internal.resize(n_points);
-  trial_.volume.resize(n_points);
 }
 
 void GridSystem::initialise_pressure(const MaterialPoints& points) {
@@ -452,14 +446,6 @@ PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) c
           points.internal[p]};
 }
 
-void GridSystem::store_trial(Index p, const FiniteStrainState& state, double volume) {
-  trial_.stress[p] = state.cauchy_stress;
-  trial_.F[p] = state.deformation_gradient;
-  trial_.be[p] = state.elastic_left_cauchy_green;
-  trial_.internal[p] = state.internal;
-  trial_.volume[p] = volume;
-}
-
 bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                 SparseMatrix* tangent) {
   return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
@@ -527,7 +513,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim, m = n + (Mixed ? nen : 0);
   f_int = Vector::Zero(num_dofs());
   if (tangent) {
-    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows())
+    if (tangent != &pattern_ &&
+        (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows()))
       *tangent = pattern_;
     std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
   }
@@ -592,8 +579,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
             }
             if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
               add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
-            store_trial(p, rm.u.state, rm.u.volume);
-            trial_.stress[p] = rm.total_stress;
+            commit(p, rm.u.state, rm.u.volume, rm.total_stress);
             continue;
           }
         }
@@ -605,7 +591,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
         if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
           add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
-        store_trial(p, r.state, r.volume);
+        commit(p, r.state, r.volume, r.state.cauchy_stress);
       }
       for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
       if (tangent) {
@@ -780,8 +766,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
       if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
         add_target_spring(p, s.N, du_local, tangent != nullptr, rm.u.internal_force,
                           rm.u.stiffness);
-      store_trial(p, rm.u.state, rm.u.volume);
-      trial_.stress[p] = rm.total_stress;
+      commit(p, rm.u.state, rm.u.volume, rm.total_stress);
       f_local << rm.u.internal_force, pressure_scale_ * rm.pressure_residual;
       if (tangent) {
         const double s_p = pressure_scale_;
@@ -791,7 +776,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
       if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
       if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
         add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
-      store_trial(p, r.state, r.volume);
+      commit(p, r.state, r.volume, r.state.cauchy_stress);
       f_local = r.internal_force;
       if (tangent) K_local = r.stiffness;
     }
@@ -821,8 +806,19 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
 // Phase 3: convect
 // ---------------------------------------------------------------------------------------------
 
+bool GridSystem::commit_state(MaterialPoints& points, const Vector& du) {
+  // Each point reads its start state before its state is written, and belongs to one cell (or
+  // one wide stencil pass), so writing through while evaluating is safe.
+  commit_to_ = &points;
+  Vector f_int;
+  const bool admissible = internal_force(points, du, f_int, nullptr);
+  commit_to_ = nullptr;
+  return admissible;
+}
+
 void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
-                         const Vector& acceleration, double dt, bool dynamic) const {
+                         const Vector& acceleration, double dt, bool dynamic) {
+  commit_state(points, du);
   dispatch_cell_type(mesh_.cell_type, [&](auto e) {
     convect_typed<decltype(e)>(points, du, velocity, acceleration, dt, dynamic);
   });
@@ -854,11 +850,6 @@ void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const V
       points.velocity[p] = dx / dt;
       points.acceleration[p].setZero();
     }
-    points.stress[p] = trial_.stress[p];
-    points.deformation_gradient[p] = trial_.F[p];
-    points.elastic_left_cauchy_green[p] = trial_.be[p];
-    points.internal[p] = trial_.internal[p];
-    points.volume[p] = trial_.volume[p];
   }
 }
 

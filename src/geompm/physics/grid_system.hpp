@@ -85,11 +85,17 @@ class GridSystem {
   bool internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                       SparseMatrix* tangent);
 
+  /// Writes into `points` the state the internal force computes at `du` (stress, F, b_e,
+  /// internal variables, volume): one more evaluation, without the tangent, instead of keeping
+  /// a trial copy of every point's state through Newton (docs/performance.md: memory).
+  bool commit_state(MaterialPoints& points, const Vector& du);
+
   // --- phase 3: convect ------------------------------------------------------------------
-  /// Moves the points with the converged grid solution and commits their trial state; the
-  /// velocity and acceleration are updated from the nodal ones (FLIP increments; seed §2).
+  /// Commits the points' state at the converged solution (commit_state) and moves them with
+  /// it; the velocity and acceleration are updated from the nodal ones (FLIP increments; seed
+  /// §2).
   void convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
-               const Vector& acceleration, double dt, bool dynamic) const;
+               const Vector& acceleration, double dt, bool dynamic);
 
   // --- grid data --------------------------------------------------------------------------
   int dim() const { return dim_; }
@@ -113,6 +119,9 @@ class GridSystem {
   const Vector& velocity() const { return velocity_; }
   const Vector& acceleration() const { return acceleration_; }
   const SparseMatrix& pattern() const { return pattern_; }
+  /// The pattern's own storage, for Newton to assemble the tangent into (internal_force with
+  /// tangent = &tangent_storage()): one copy of the matrix instead of two.
+  SparseMatrix& tangent_storage() { return pattern_; }
   /// Fraction of each active cell's volume covered by points (0 for buffer cells).
   const std::vector<double>& cell_fill() const { return cell_fill_; }
   /// A length per active cell: its size (area or volume)^(1/dim), for penalty scaling.
@@ -163,7 +172,17 @@ class GridSystem {
                                  SparseMatrix* tangent);
   void colour_active_cells();
   PointStartState start_state(const MaterialPoints& points, Index p) const;
-  void store_trial(Index p, const FiniteStrainState& state, double volume);
+  /// Point p's updated state at the current evaluation: written to the points only when
+  /// commit_state() asks for it (`stress`: the total stress, which the mixed formulation
+  /// changes).
+  void commit(Index p, const FiniteStrainState& state, double volume, const Mat3& stress) const {
+    if (!commit_to_) return;
+    commit_to_->stress[p] = stress;
+    commit_to_->deformation_gradient[p] = state.deformation_gradient;
+    commit_to_->elastic_left_cauchy_green[p] = state.elastic_left_cauchy_green;
+    commit_to_->internal[p] = state.internal;
+    commit_to_->volume[p] = volume;
+  }
 
   const Mesh& mesh_;
   const MeshTopology& topology_;
@@ -211,17 +230,7 @@ class GridSystem {
   SparseMatrix pattern_;
   std::vector<int> scatter_;  // cell_dofs()^2 per active cell: position in the values, or -1
 
- public:
-  // Trial state of each point at the last evaluation (committed by convect()).
-  struct TrialState {
-    std::vector<Mat3> stress, F, be;
-    std::vector<InternalVariables> internal;
-    std::vector<double> volume;
-  };
-  const TrialState& trial() const { return trial_; }
-
- private:
-  TrialState trial_;
+  MaterialPoints* commit_to_ = nullptr;  // set by commit_state() only
 };
 
 }  // namespace geompm
