@@ -4,6 +4,10 @@
 
 #include <filesystem>
 #include <string>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
@@ -12,8 +16,21 @@
 
 namespace geompm::testing {
 
+/// A fresh directory of its own for a run: the process id keeps tests that CTest runs at the same
+/// time (separate processes, possibly the same run name) out of each other's files.
+/// They are removed when the test process ends.
 inline std::filesystem::path fresh_directory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("geompm_test_" + name);
+  struct RemovedAtExit {
+    std::vector<std::filesystem::path> directories;
+    ~RemovedAtExit() {
+      std::error_code ignored;
+      for (const auto& d : directories) std::filesystem::remove_all(d, ignored);
+    }
+  };
+  static RemovedAtExit created;
+  auto dir = std::filesystem::temp_directory_path() /
+             ("geompm_test_" + name + "_" + std::to_string(::getpid()));
+  created.directories.push_back(dir);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

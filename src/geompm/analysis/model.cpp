@@ -95,12 +95,7 @@ Mesh make_mesh(const spec::Model& spec) {
 // name them.
 void add_node_sets(const spec::Model& spec, Mesh& mesh) {
   const int dim = mesh.dim();
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
-  for (const auto& x : mesh.nodes) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double tol = 1e-9 * (hi - lo).head(dim).norm();
+  const double tol = node_tolerance(mesh);
   for (const auto& set : spec.node_sets) {
     if (mesh.node_groups.count(set.name))
       throw InputError(set.source, fmt::format("'{}' is a boundary of the mesh already; give the "

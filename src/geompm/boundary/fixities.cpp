@@ -7,15 +7,25 @@
 
 namespace geompm {
 
-std::vector<ResolvedFixity> resolve_fixities(const Mesh& mesh,
-                                             const std::vector<spec::Fixity>& fixities) {
-  const int dim = mesh.dim();
+std::pair<Vec3, Vec3> node_bounds(const Mesh& mesh) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
   for (const auto& x : mesh.nodes) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const double tol = 1e-9 * (hi - lo).head(dim).norm();
+  return {lo, hi};
+}
+
+double node_tolerance(const Mesh& mesh) {
+  const auto [lo, hi] = node_bounds(mesh);
+  return 1e-9 * (hi - lo).head(mesh.dim()).norm();
+}
+
+std::vector<ResolvedFixity> resolve_fixities(const Mesh& mesh,
+                                             const std::vector<spec::Fixity>& fixities) {
+  const int dim = mesh.dim();
+  const auto [lo, hi] = node_bounds(mesh);
+  const double tol = node_tolerance(mesh);
 
   std::vector<ResolvedFixity> out;
   for (const auto& f : fixities) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geompm/io/model_spec.hpp"
@@ -17,6 +18,12 @@ struct ResolvedFixity {
   std::vector<Index> nodes;  // mesh nodes
   std::array<bool, 3> components = {false, false, false};
 };
+
+/// The corners of the box around the mesh's nodes.
+std::pair<Vec3, Vec3> node_bounds(const Mesh& mesh);
+/// The distance below which a node counts as on a plane or in a box: 1e-9 of the mesh's
+/// bounding-box diagonal.
+double node_tolerance(const Mesh& mesh);
 
 /// Throws InputError (with the fixity's source) for a boundary that is not axis-aligned under
 /// "normal", or a plane that holds no mesh node.

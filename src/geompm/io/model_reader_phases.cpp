@@ -231,17 +231,36 @@ void read_fixed_components(const yaml::Node& node, const Context& context, spec:
   }
 }
 
+// The nodes a fixity or a grid motion acts on: a boundary (or node set), or a plane.
+template <class Target>
+void read_node_selection(const yaml::Map& section, const Context& context, Target& target) {
+  if (section.exactly_one_of({"boundary", "plane"}) == "boundary") {
+    target.boundary = read_boundary_name(section.required("boundary"), context);
+  } else {
+    const yaml::Map plane = section.required("plane").map({"axis", "value"});
+    target.plane_axis = read_component(plane.required("axis"), context.dimension);
+    target.plane_value = plane.required("value").number();
+  }
+}
+
+// The displacement or velocity of a prescribed motion (of points or of nodes): one expression
+// of t per component, ~ for a free one, at least one prescribed.
+template <class Motion>
+void read_motion_components(const yaml::Map& section, const Context& context, Motion& motion) {
+  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
+  motion.velocity = kind == "velocity";
+  const yaml::Node components = section.required(kind);
+  motion.components = read_expression_vector(components, context.dimension, time_only, true, "");
+  if (std::all_of(motion.components.begin(), motion.components.end(),
+                  [](const std::string& c) { return c.empty(); }))
+    components.fail("every component is free (~); prescribe at least one, or remove the entry");
+}
+
 spec::Fixity read_fixity(const yaml::Node& node, const Context& context) {
   const yaml::Map section = node.map({"boundary", "plane", "fix"});
   spec::Fixity fixity;
   fixity.source = node.where();
-  if (section.exactly_one_of({"boundary", "plane"}) == "boundary") {
-    fixity.boundary = read_boundary_name(section.required("boundary"), context);
-  } else {
-    const yaml::Map plane = section.required("plane").map({"axis", "value"});
-    fixity.plane_axis = read_component(plane.required("axis"), context.dimension);
-    fixity.plane_value = plane.required("value").number();
-  }
+  read_node_selection(section, context, fixity);
   read_fixed_components(section.required("fix"), context, fixity);
   return fixity;
 }
@@ -251,13 +270,7 @@ spec::PrescribedMotion read_motion(const yaml::Node& node, const Context& contex
   spec::PrescribedMotion motion;
   motion.source = node.where();
   motion.point_set = read_reference(section.required("point_set"), "point set", context.point_sets);
-  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
-  motion.velocity = kind == "velocity";
-  const yaml::Node components = section.required(kind);
-  motion.components = read_expression_vector(components, context.dimension, time_only, true, "");
-  if (std::all_of(motion.components.begin(), motion.components.end(),
-                  [](const std::string& c) { return c.empty(); }))
-    components.fail("every component is free (~); prescribe at least one, or remove the entry");
+  read_motion_components(section, context, motion);
   return motion;
 }
 
@@ -266,20 +279,8 @@ spec::GridMotion read_grid_motion(const yaml::Node& node, const Context& context
   const yaml::Map section = node.map({"boundary", "plane", "displacement", "velocity"});
   spec::GridMotion motion;
   motion.source = node.where();
-  if (section.exactly_one_of({"boundary", "plane"}) == "boundary") {
-    motion.boundary = read_boundary_name(section.required("boundary"), context);
-  } else {
-    const yaml::Map plane = section.required("plane").map({"axis", "value"});
-    motion.plane_axis = read_component(plane.required("axis"), context.dimension);
-    motion.plane_value = plane.required("value").number();
-  }
-  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
-  motion.velocity = kind == "velocity";
-  const yaml::Node components = section.required(kind);
-  motion.components = read_expression_vector(components, context.dimension, time_only, true, "");
-  if (std::all_of(motion.components.begin(), motion.components.end(),
-                  [](const std::string& c) { return c.empty(); }))
-    components.fail("every component is free (~); prescribe at least one, or remove the entry");
+  read_node_selection(section, context, motion);
+  read_motion_components(section, context, motion);
   return motion;
 }
 

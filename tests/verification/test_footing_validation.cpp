@@ -1,0 +1,166 @@
+// Footings against bearing-capacity theory (shared/validation/REFERENCES.md §3; docs/validation.md
+// §4-§8): the models of examples/strip_footing/ and examples/mohr_coulomb_footing/ on their own
+// mesh (10 cells under the footing's half-width, h = B/20), each run taking 2-30 s; the whole
+// file about a minute on one core. What is asserted, and why:
+// - the mixed p-u answer does not depend on nu (0.49 against 0.4999, < 2 %, REFERENCES §3) and
+//   Newton stays at <= 10 iterations per step through plastic flow (issue 3);
+// - the displacement formulation locks at nu = 0.4999 (q/s_u far above Prandtl's 2 + pi) while
+//   the mixed one stays within the O(h) over-estimate the mesh study measured (docs/validation.md
+//   §5);
+// - Mohr-Coulomb (phi = 20, associated) against Prandtl-Reissner's N_c = 14.83, within the
+//   over-estimate measured on this mesh at 0.05 B (docs/validation.md §8; a check of the model's
+//   behaviour, not of the bearing capacity, which §8 reports as not reached).
+// Not asserted: the band 5.14-5.40 of the issue, which no affordable mesh reached (+7 % at
+// h = B/20, where the footing's edge spreads over a cell; 5.11, just below it, at B/40:
+// docs/validation.md §5), and the smooth footing, which stops before 0.1 B at nu = 0.4999 (§4).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "run_model.hpp"
+
+namespace geompm {
+namespace {
+
+constexpr double kPrandtl =
+    2.0 + std::numbers::pi;  // q_u / s_u of a rigid strip on Tresca soil (Prandtl 1921)
+
+std::string read_example_text(const std::string& relative) {
+  std::ifstream in(std::string(GEOMPM_SOURCE_DIR) + "/examples/" + relative);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Replaces the one occurrence of `from` (the test fails loudly if the example changed).
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "the example no longer holds: " << from;
+  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "more than once: " << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// The examples' mesh (10 cells under the footing's half-width, h = B/20), without VTK files.
+std::string no_vtk(const std::string& text) {
+  return replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}");
+}
+
+struct Footing {
+  std::vector<double> settlement, q, iterations;
+  RunSummary summary;
+  // q at a settlement (linear between steps)
+  double q_at(double s) const {
+    for (std::size_t k = 1; k < settlement.size(); ++k)
+      if (settlement[k] >= s - 1e-5) {
+        const double a = (s - settlement[k - 1]) / (settlement[k] - settlement[k - 1]);
+        return q[k - 1] + a * (q[k] - q[k - 1]);
+      }
+    ADD_FAILURE() << "the run did not reach a settlement of " << s;
+    return NAN;
+  }
+  int max_iterations() const {
+    return static_cast<int>(*std::max_element(iterations.begin(), iterations.end()));
+  }
+};
+
+// Runs a footing model (once per text: several tests share runs); q = scale x force column.
+const Footing& run_footing(const std::string& text, const std::string& name, double scale) {
+  static std::map<std::string, Footing> cache;
+  if (auto it = cache.find(text); it != cache.end()) return it->second;
+  const auto run = testing::run_spec(read_model_from_string(text, name + ".yaml"), name);
+  Footing f;
+  f.summary = run.summary;
+  for (double s : run.column("settlement")) f.settlement.push_back(-s);  // B = 1
+  for (double force : run.column("force")) f.q.push_back(scale * force);
+  f.iterations = run.column("newton_iterations");
+  std::printf("[%s] %d steps, Newton max %d, total %d; q at the end %.3f\n", name.c_str(),
+              f.summary.steps, f.summary.max_iterations_in_a_step, f.summary.iterations,
+              f.q.back());
+  return cache.emplace(text, std::move(f)).first->second;
+}
+
+const std::string kClay = "nu: 0.49, density: 0, formulation: mixed";
+
+std::string strip(bool rough, double nu, const char* formulation) {
+  const auto text = read_example_text(rough ? "strip_footing/strip_footing.yaml"
+                                            : "strip_footing/strip_footing_smooth.yaml");
+  char clay[100];
+  std::snprintf(clay, sizeof clay, "nu: %g, density: 0, formulation: %s", nu, formulation);
+  return no_vtk(replace_once(text, kClay, clay));
+}
+
+// q / s_u = 2 x force / (B s_u): half of a strip of width B = 1, s_u = 1 (the reaction is upward
+// on the soil, negative on the footing).
+constexpr double kStripScale = -2.0;
+
+TEST(StripFootingValidation, MixedPUDoesNotDependOnNuAndNewtonStaysAtTenIterations) {
+  // The rough footing only: the smooth one (its top row of soil points driven) stops before 0.1 B
+  // at nu = 0.4999 on the report's mesh (docs/validation.md §4).
+  for (const bool rough : {true}) {
+    const auto& a =
+        run_footing(strip(rough, 0.49, "mixed"), rough ? "rough_049" : "smooth_049", kStripScale);
+    const auto& b = run_footing(strip(rough, 0.4999, "mixed"),
+                                rough ? "rough_04999" : "smooth_04999", kStripScale);
+    const double qa = a.q_at(0.1), qb = b.q_at(0.1);
+    std::printf("[%s strip, p-u, 0.1 B] q/s_u = %.3f (nu 0.49), %.3f (nu 0.4999)\n",
+                rough ? "rough" : "smooth", qa, qb);
+    // REFERENCES §3: a locking-free answer moves by < 2 % between nu = 0.49 and 0.4999.
+    EXPECT_LT(std::abs(qb / qa - 1.0), 0.02) << (rough ? "rough" : "smooth");
+    // Issue 3: Newton converges in at most 10 iterations per step through plastic flow.
+    EXPECT_LE(a.max_iterations(), 10) << (rough ? "rough" : "smooth");
+    EXPECT_LE(b.max_iterations(), 10) << (rough ? "rough" : "smooth");
+    // Prandtl's 2 + pi is an exact limit load: the low-order discretisation stays above it, by the
+    // O(h) over-estimate of docs/validation.md §5 (+16 % at h = B/10, +7 % at B/20, falling with
+    // h).
+    EXPECT_GT(qa, kPrandtl);
+    EXPECT_LT(qa, 1.12 * kPrandtl);
+  }
+}
+
+TEST(StripFootingValidation, DisplacementFormulationLocksWhereMixedPUDoesNot) {
+  const auto& locked =
+      run_footing(strip(true, 0.4999, "displacement"), "rough_disp_04999", kStripScale);
+  const auto& mixed = run_footing(strip(true, 0.4999, "mixed"), "rough_04999", kStripScale);
+  const double ql = locked.q_at(0.1), qm = mixed.q_at(0.1);
+  std::printf("[rough strip, nu 0.4999, 0.1 B] q/s_u displacement %.2f, p-u %.3f (Prandtl %.3f)\n",
+              ql, qm, kPrandtl);
+  // Volumetric locking (Nagtegaal, Parks & Rice 1974; Sloan & Randolph 1982): the displacement
+  // formulation's limit load is far above Prandtl's and grows with the bulk modulus.
+  EXPECT_GT(ql, 1.5 * kPrandtl);
+  EXPECT_LT(qm, 1.12 * kPrandtl);
+}
+
+TEST(MohrCoulombFootingValidation, SmoothFootingAgainstPrandtlReissnerNc) {
+  // Prandtl (1921), Reissner (1924): N_c = (N_q - 1) cot(phi), N_q = e^(pi tan phi) tan^2(45 +
+  // phi/2); 14.83 for phi = 20 deg, exact for associated flow.
+  const double phi = 20.0 * std::numbers::pi / 180.0;
+  const double Nq = std::exp(std::numbers::pi * std::tan(phi)) *
+                    std::pow(std::tan(std::numbers::pi / 4 + phi / 2), 2);
+  const double Nc = (Nq - 1.0) / std::tan(phi);
+  EXPECT_NEAR(Nc, 14.835, 0.001);
+  const auto text = no_vtk(read_example_text("mohr_coulomb_footing/mohr_coulomb_footing.yaml"));
+  const auto& f = run_footing(text, "mohr_coulomb", kStripScale);
+  const double q = f.q_at(0.05);
+  std::printf("[Mohr-Coulomb strip, phi 20, h = B/20, 0.05 B] q/c = %.3f, N_c = %.3f (%+.1f %%)\n",
+              q, Nc, (q / Nc - 1) * 100);
+  EXPECT_LE(f.max_iterations(), 10);
+  // Low-order cells over-estimate the limit load of associated (dilatant) flow — the dilatancy
+  // constraint locks them as incompressibility does (Sloan & Randolph 1982). docs/validation.md
+  // §8 measured, at 0.05 B, +21 % at h = B/10, +9 % at B/20 and +2.5 % at B/40, the curves still
+  // rising there (the model levels off at +18-22 % near 0.09 B at B/20, so the N_c target is
+  // reported as not reached). Asserted: on this mesh the value at 0.05 B lies above N_c and
+  // within the over-estimate measured for it (15 %, allowing cell-crossing noise of a few %).
+  EXPECT_GT(q, Nc);
+  EXPECT_LT(q, 1.15 * Nc);
+}
+
+}  // namespace
+}  // namespace geompm
