@@ -4,6 +4,8 @@
 Usage: /usr/bin/python3 scripts/validation_report.py [--binary build/geompm] [--sections footing]
                                                      [--jobs 2] [--work DIR]
 Every number in the report is computed here from the runs; the references are cited inline.
+Needs the Debian packages python3-numpy, python3-meshio (installed by scripts/setup.sh) and
+python3-matplotlib (for the footing figures; `sudo apt-get install python3-matplotlib`).
 
 --sections NAME[,NAME...] re-runs only the named sections (bar, column, oedometer, footing) and
 keeps the other sections of the existing docs/validation.md as they are (the file is split on its
