@@ -562,36 +562,46 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
                                                                     std::size_t(p) * nen * dim);
         const PointStartState start = start_state(points, p);
+        // The point's forces and stiffness by its formulation; then, shared, its prescribed-motion
+        // spring and its state.
+        const FiniteStrainState* state = &r.state;
+        const Mat3* stress = &r.state.cauchy_stress;
+        double volume = 0.0;
+        bool ok = false;
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
-            if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric,
-                                       tangent != nullptr, rm)) {
-              admissible = false;
-              continue;
+            ok = integrate_mixed_point(s, start, du_local, p_local, axisymmetric,
+                                       tangent != nullptr, rm);
+            if (ok) {
+              f_cell.template head<n>() += rm.u.internal_force;
+              f_cell.template tail<nen>() += s_p * rm.pressure_residual;
+              if (tangent) {
+                K_cell.template topLeftCorner<n, n>() += rm.u.stiffness;
+                K_cell.template topRightCorner<n, nen>() += s_p * rm.K_up;
+                K_cell.template bottomLeftCorner<nen, n>() += s_p * rm.K_pu;
+                K_cell.template bottomRightCorner<nen, nen>() += (s_p * s_p) * rm.K_pp;
+              }
+              state = &rm.u.state;
+              stress = &rm.total_stress;
+              volume = rm.u.volume;
             }
-            f_cell.template head<n>() += rm.u.internal_force;
-            f_cell.template tail<nen>() += s_p * rm.pressure_residual;
-            if (tangent) {
-              K_cell.template topLeftCorner<n, n>() += rm.u.stiffness;
-              K_cell.template topRightCorner<n, nen>() += s_p * rm.K_up;
-              K_cell.template bottomLeftCorner<nen, n>() += s_p * rm.K_pu;
-              K_cell.template bottomRightCorner<nen, nen>() += (s_p * s_p) * rm.K_pp;
-            }
-            if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-              add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
-            commit(p, rm.u.state, rm.u.volume, rm.total_stress);
-            continue;
           }
         }
-        if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) {
+        if (!(Mixed && is_mixed(points, p))) {
+          ok = integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r);
+          if (ok) {
+            f_cell.template head<n>() += r.internal_force;
+            if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
+            volume = r.volume;
+          }
+        }
+        if (!ok) {
           admissible = false;
           continue;
         }
-        f_cell.template head<n>() += r.internal_force;
-        if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
         if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
           add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
-        commit(p, r.state, r.volume, r.state.cauchy_stress);
+        commit(p, *state, volume, *stress);
       }
       for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
       if (tangent) {
@@ -753,8 +763,6 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
     const PointStartState start = start_state(points, p);
     const bool mixed = is_mixed(points, p);
     const int n = static_cast<int>(ns) * Dim, local = n + (mixed ? static_cast<int>(ns) : 0);
-    f_local.resize(local);
-    if (tangent) K_local.setZero(local, local);
     if (mixed) {
       // The pressure is interpolated with the point's own weights (eq. 11.1): its cell's (DDMP)
       // or its domain's (GIMP).
@@ -763,23 +771,23 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         p_local(a) = pressure_start_(stencil[a]) + pressure_scale_ * du(pressure_dof(stencil[a]));
       if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr, rm))
         return false;
-      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-        add_target_spring(p, s.N, du_local, tangent != nullptr, rm.u.internal_force,
-                          rm.u.stiffness);
-      commit(p, rm.u.state, rm.u.volume, rm.total_stress);
-      f_local << rm.u.internal_force, pressure_scale_ * rm.pressure_residual;
+      const double s_p = pressure_scale_;
+      f_local.resize(local);
+      f_local << rm.u.internal_force, s_p * rm.pressure_residual;
       if (tangent) {
-        const double s_p = pressure_scale_;
+        K_local.resize(local, local);
         K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
       }
+      commit(p, rm.u.state, rm.u.volume, rm.total_stress);
     } else {
       if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
-      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-        add_target_spring(p, s.N, du_local, tangent != nullptr, r.internal_force, r.stiffness);
-      commit(p, r.state, r.volume, r.state.cauchy_stress);
       f_local = r.internal_force;
       if (tangent) K_local = r.stiffness;
+      commit(p, r.state, r.volume, r.state.cauchy_stress);
     }
+    // The spring acts on the displacements, the first ns * Dim local unknowns.
+    if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+      add_target_spring(p, s.N, du_local, tangent != nullptr, f_local, K_local);
     dofs.resize(local);
     for (int l = 0; l < local; ++l) dofs[l] = local_dof(stencil, static_cast<int>(ns), l);
     for (int l = 0; l < local; ++l) f_int(dofs[l]) += f_local(l);
