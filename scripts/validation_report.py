@@ -1028,9 +1028,12 @@ def section_frictional(args, work):
     lines = []
     w = lines.append
     print("§9 frictional footings", flush=True)
-    nq_text = example("frictional_footing/frictional_footing_nq.yaml")
-    ngr_text = example("frictional_footing/frictional_footing_ngamma.yaml")
-    ngs_text = example("frictional_footing/frictional_footing_ngamma_smooth.yaml")
+    # The examples push only as far as their runs finish (the example tier runs them to the end);
+    # here each is pushed 0.03 B and the history up to where the run stops is used.
+    nq_text = replace_once(example("frictional_footing/frictional_footing_nq.yaml"), '"-0.01*t"', '"-0.03*t"')
+    ngr_text = replace_once(example("frictional_footing/frictional_footing_ngamma.yaml"), '"-0.007*t"', '"-0.03*t"')
+    ngs_text = replace_once(example("frictional_footing/frictional_footing_ngamma_smooth.yaml"), '"-0.004*t"',
+                            '"-0.03*t"')
     assoc, nonassoc = "phi: 30, psi: 30,", "phi: 30, psi: 0,"
     cases = {}
     for n in (5, 10, 20):

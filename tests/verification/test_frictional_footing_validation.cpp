@@ -56,6 +56,10 @@ std::string replace_once(std::string text, const std::string& from, const std::s
 // (the examples have n = 10, h = B/20), as scripts/validation_report.py refines it.
 std::string model(const std::string& file, int n) {
   auto text = replace_once(example_text(file), "vtk: {every: 10}", "vtk: {every: 0}");
+  // The examples push only as far as their runs finish; pushed 0.03 B as in the report, the runs
+  // stop on the way and the history up to there is used.
+  for (const char* push : {"\"-0.01*t\"", "\"-0.007*t\"", "\"-0.004*t\""})
+    if (text.find(push) != std::string::npos) text = replace_once(text, push, "\"-0.03*t\"");
   if (n == 10) return text;
   char buf[200];
   std::snprintf(buf, sizeof buf,
