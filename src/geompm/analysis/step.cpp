@@ -24,6 +24,7 @@ GridSettings grid_settings(const Model& model) {
       s.interpolation = GridInterpolation::Gimp;
       break;
   }
+  s.mixed_volume_average = model.spec.numerics.mixed_volume_average;
   for (const auto& material : model.spec.materials)
     s.mixed.push_back(material.formulation.value_or(model.spec.numerics.formulation) ==
                       spec::Formulation::Mixed);
@@ -195,6 +196,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.max_iterations = phase.spec->newton.max_iterations;
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
+  settings.max_halvings = phase.spec->newton.line_search;
   Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
   result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
   if (!result.newton.converged) return result;

@@ -160,8 +160,9 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section = node.map({"interpolation", "formulation", "empty_cell_stiffness",
-                                      "buffer_layers", "lost_points", "linear_solver"});
+  const yaml::Map section =
+      node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
+                "lost_points", "linear_solver", "mixed_volume"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -183,6 +184,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.lost_points = lost->choice({"stop", "remove"}) == "remove"
                                ? spec::LostPointPolicy::Remove
                                : spec::LostPointPolicy::Stop;
+  if (auto volume = section.find("mixed_volume"))
+    numerics.mixed_volume_average = volume->choice({"cell_average", "per_point"}) == "cell_average";
   if (auto solver = section.find("linear_solver"))
     numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
   return numerics;

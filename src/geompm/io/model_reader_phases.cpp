@@ -85,7 +85,7 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
 
 spec::Newton read_newton(const yaml::Node& node) {
   const yaml::Map section =
-      node.map({"max_iterations", "residual_tolerance", "displacement_tolerance"});
+      node.map({"max_iterations", "residual_tolerance", "displacement_tolerance", "line_search"});
   spec::Newton newton;
   if (auto iterations = section.find("max_iterations")) {
     newton.max_iterations = iterations->integer();
@@ -97,6 +97,14 @@ spec::Newton read_newton(const yaml::Node& node) {
     newton.residual_tolerance = read_positive(*tolerance);
   if (auto tolerance = section.find("displacement_tolerance"))
     newton.displacement_tolerance = read_positive(*tolerance);
+  if (auto halvings = section.find("line_search")) {
+    newton.line_search = halvings->integer();
+    if (newton.line_search < 0 || newton.line_search > 20)
+      halvings->fail(
+          fmt::format("expected a whole number from 0 to 20 (the most halvings of a "
+                      "correction), found {}",
+                      newton.line_search));
+  }
   return newton;
 }
 

@@ -150,6 +150,7 @@ struct Newton {
   int max_iterations = 15;
   double residual_tolerance = 1e-8;      // relative to the force scale
   double displacement_tolerance = 1e-8;  // relative to the step's displacement increment
+  int line_search = 0;                   // halvings of an overshooting correction (0: none)
 };
 
 struct Dynamics {
@@ -215,6 +216,7 @@ struct Numerics {
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
+  bool mixed_volume_average = true;  // mixed_volume: cell_average (F-bar) or per_point
 };
 
 struct Model {

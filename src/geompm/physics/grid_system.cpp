@@ -175,6 +175,10 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   empty_cell_stiffness_typed<E>();
   if (settings_.interpolation == GridInterpolation::DualDomain)
     build_dual_domain_stencils<E>(points);
+  union_start_.clear();
+  union_nodes_.clear();
+  if (wide_stencil() && mixed_ && settings_.mixed_volume_average)
+    build_mixed_stencil_unions(points);
 
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_dofs = num_dofs();
@@ -379,6 +383,12 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
       for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a)
         for (Index b = wide_start_[p]; b < wide_start_[p + 1]; ++b)
           neighbours[wide_nodes_[a]].push_back(wide_nodes_[b]);
+  // The volume average couples the stencils of a cell's mixed points (theory §12).
+  for (std::size_t ci = 0; ci + 1 < union_start_.size(); ++ci)
+    for (Index a = union_start_[ci]; a < union_start_[ci + 1]; ++a)
+      neighbours[union_nodes_[a]].insert(neighbours[union_nodes_[a]].end(),
+                                         union_nodes_.begin() + union_start_[ci],
+                                         union_nodes_.begin() + union_start_[ci + 1]);
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -507,6 +517,44 @@ void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
     }
 }
 
+template <class E>
+Stencil<E::nodes, E::dim> GridSystem::cell_stencil(Index p) const {
+  PointStencil<E> s;
+  s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * E::nodes);
+  s.dN_dX = Eigen::Map<const Eigen::Matrix<double, E::nodes, E::dim>>(
+      gradients_.data() + std::size_t(p) * E::nodes * E::dim);
+  return s;
+}
+
+template <int NS, int Dim, class StencilOf>
+bool GridSystem::average_volume_change(const MaterialPoints& points, Index ci,
+                                       const Eigen::Matrix<double, NS, Dim>& du,
+                                       StencilOf&& stencil_of,
+                                       AveragedVolumeChange<NS, Dim>& average) const {
+  // Eq. 12.1 and 12.4 over the cell's mixed points: volume ratios weighted by the start-of-step
+  // volumes (so the cell's volume is kept exactly: sum_q v_q,n dJ^ = sum_q v_q), divergence
+  // operators by the current ones. stencil_of(p): point p's weights over the rows of du.
+  const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  const Index n = du.rows() * Dim;
+  Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> divergence(1, n);
+  double start_volume = 0.0, volume = 0.0;
+  average.divergence.setZero(1, n);
+  for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+    if (!is_mixed(points, p)) continue;
+    double dJ = 1.0;
+    if (!point_volume_change(stencil_of(p), start_state(points, p), du, axisymmetric, dJ,
+                             divergence))
+      return false;
+    const double v_n = points.volume[p];
+    start_volume += v_n;
+    volume += v_n * dJ;
+    average.divergence += (v_n * dJ) * divergence;
+  }
+  average.ratio = start_volume > 0.0 ? volume / start_volume : 1.0;
+  if (volume > 0.0) average.divergence /= volume;
+  return true;
+}
+
 template <class E, bool Mixed>
 bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                       SparseMatrix* tangent) {
@@ -557,10 +605,20 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       [[maybe_unused]] MixedKernelResult<E::nodes, E::dim> rm;
       // Points with a wide stencil are assembled one by one below.
       const Index point_end = wide_stencil() ? cell_point_begin_[ci] : cell_point_end_[ci];
+      [[maybe_unused]] AveragedVolumeChange<nen, dim> average;
+      [[maybe_unused]] const AveragedVolumeChange<nen, dim>* cell_average = nullptr;
+      if constexpr (Mixed) {
+        if (settings_.mixed_volume_average && point_end > cell_point_begin_[ci]) {
+          if (!average_volume_change(
+                  points, ci, du_local, [&](Index q) { return cell_stencil<E>(q); }, average)) {
+            admissible = false;
+            continue;
+          }
+          cell_average = &average;
+        }
+      }
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
-        s.N = Eigen::Map<const typename E::Values>(shape_.data() + std::size_t(p) * nen);
-        s.dN_dX = Eigen::Map<const Eigen::Matrix<double, nen, dim>>(gradients_.data() +
-                                                                    std::size_t(p) * nen * dim);
+        s = cell_stencil<E>(p);
         const PointStartState start = start_state(points, p);
         // The point's forces and stiffness by its formulation; then, shared, its prescribed-motion
         // spring and its state.
@@ -571,7 +629,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
             ok = integrate_mixed_point(s, start, du_local, p_local, axisymmetric,
-                                       tangent != nullptr, rm);
+                                       tangent != nullptr, rm, cell_average);
             if (ok) {
               f_cell.template head<n>() += rm.u.internal_force;
               f_cell.template tail<nen>() += s_p * rm.pressure_residual;
@@ -583,7 +641,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
               }
               state = &rm.u.state;
               stress = &rm.total_stress;
-              volume = rm.u.volume;
+              volume = rm.u.state_volume;
             }
           }
         }
@@ -739,75 +797,130 @@ void GridSystem::build_gimp_stencils(const MaterialPoints& points, std::vector<c
 template <int Dim>
 bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const Vector& du,
                                            Vector& f_int, SparseMatrix* tangent) {
-  // Points one after the other (their stencils overlap across cells of one colour).
+  // Cell by cell, the points one after the other (their stencils overlap across cells of one
+  // colour). With the volume average (theory §12) the mixed points of a cell see the union of
+  // their stencils, their own weights padded with zeros, so that the average's rate and every
+  // point's forces live on the same unknowns.
   using Dynamic = Stencil<Eigen::Dynamic, Dim>;
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
+  const bool averaging = mixed_ && settings_.mixed_volume_average;
   Dynamic s;
   KernelResult<Eigen::Dynamic, Dim> r;
   MixedKernelResult<Eigen::Dynamic, Dim> rm;
+  AveragedVolumeChange<Eigen::Dynamic, Dim> average;
   Eigen::Matrix<double, Eigen::Dynamic, Dim> du_local;
   Eigen::VectorXd p_local, f_local;
   Eigen::MatrixXd K_local;
-  std::vector<Index> dofs;
+  std::vector<Index> dofs, cell_nodes, nodes;
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
-  for (Index p = 0; p < points.size(); ++p) {
-    const Index begin = wide_start_[p], ns = wide_start_[p + 1] - begin;
-    const auto stencil = wide_nodes_.begin() + begin;
-    s.N = Eigen::Map<const Eigen::VectorXd>(wide_N_.data() + begin, ns);
-    s.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
-        wide_gradients_.data() + std::size_t(begin) * Dim, ns, Dim);
-    du_local.resize(ns, Dim);
-    for (Index a = 0; a < ns; ++a)
-      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(stencil[a] * Dim + i);
-    const PointStartState start = start_state(points, p);
-    const bool mixed = is_mixed(points, p);
-    const int n = static_cast<int>(ns) * Dim, local = n + (mixed ? static_cast<int>(ns) : 0);
-    if (mixed) {
-      // The pressure is interpolated with the point's own weights (eq. 11.1): its cell's (DDMP)
-      // or its domain's (GIMP).
-      p_local.resize(ns);
-      for (Index a = 0; a < ns; ++a)
-        p_local(a) = pressure_start_(stencil[a]) + pressure_scale_ * du(pressure_dof(stencil[a]));
-      if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr, rm))
-        return false;
-      const double s_p = pressure_scale_;
-      f_local.resize(local);
-      f_local << rm.u.internal_force, s_p * rm.pressure_residual;
-      if (tangent) {
-        K_local.resize(local, local);
-        K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
-      }
-      commit(p, rm.u.state, rm.u.volume, rm.total_stress);
-    } else {
-      if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
-      f_local = r.internal_force;
-      if (tangent) K_local = r.stiffness;
-      commit(p, r.state, r.volume, r.state.cauchy_stress);
+  // Point p's weights over `over` (sorted active nodes holding its own stencil).
+  const auto stencil_over = [&](Index p, const std::vector<Index>& over) {
+    const Index begin = wide_start_[p], end = wide_start_[p + 1];
+    Dynamic padded;
+    padded.N.setZero(static_cast<Index>(over.size()));
+    padded.dN_dX.setZero(static_cast<Index>(over.size()), Dim);
+    for (Index a = begin; a < end; ++a) {
+      const Index at = std::lower_bound(over.begin(), over.end(), wide_nodes_[a]) - over.begin();
+      padded.N(at) = wide_N_[a];
+      for (int i = 0; i < Dim; ++i) padded.dN_dX(at, i) = wide_gradients_[std::size_t(a) * Dim + i];
     }
-    // The spring acts on the displacements, the first ns * Dim local unknowns.
-    if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-      add_target_spring(p, s.N, du_local, tangent != nullptr, f_local, K_local);
-    dofs.resize(local);
-    for (int l = 0; l < local; ++l) dofs[l] = local_dof(stencil, static_cast<int>(ns), l);
-    for (int l = 0; l < local; ++l) f_int(dofs[l]) += f_local(l);
-    if (!tangent) continue;
-    double* values = tangent->valuePtr();
-    for (int lc = 0; lc < local; ++lc) {
-      const Index col = free_index_[dofs[lc]];
-      if (col < 0) continue;
-      const int* at = inner + outer[col];
-      const int* end = inner + outer[col + 1];
-      // Stencil nodes are sorted and pressures come after displacements: rows ascend.
-      for (int lr = 0; lr < local; ++lr) {
-        const Index row = free_index_[dofs[lr]];
-        if (row < 0) continue;
-        at = std::lower_bound(at, end, row);
-        values[at - inner] += K_local(lr, lc);
+    return padded;
+  };
+  const auto gather = [&](const std::vector<Index>& over) {
+    du_local.resize(static_cast<Index>(over.size()), Dim);
+    for (std::size_t a = 0; a < over.size(); ++a)
+      for (int i = 0; i < Dim; ++i) du_local(a, i) = du(over[a] * Dim + i);
+  };
+  for (std::size_t ci = 0; ci < active_cells_.size(); ++ci) {
+    const bool cell_average = averaging && union_start_[ci + 1] > union_start_[ci];
+    if (cell_average) {
+      cell_nodes.assign(union_nodes_.begin() + union_start_[ci],
+                        union_nodes_.begin() + union_start_[ci + 1]);
+      gather(cell_nodes);
+      if (!average_volume_change(
+              points, ci, du_local, [&](Index q) { return stencil_over(q, cell_nodes); }, average))
+        return false;
+    }
+    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+      const bool mixed = is_mixed(points, p);
+      if (mixed && cell_average) {
+        nodes = cell_nodes;
+      } else {
+        nodes.assign(wide_nodes_.begin() + wide_start_[p],
+                     wide_nodes_.begin() + wide_start_[p + 1]);
+      }
+      s = stencil_over(p, nodes);
+      gather(nodes);
+      const Index ns = static_cast<Index>(nodes.size());
+      const PointStartState start = start_state(points, p);
+      const int n = static_cast<int>(ns) * Dim, local = n + (mixed ? static_cast<int>(ns) : 0);
+      if (mixed) {
+        // The pressure is interpolated with the point's own weights (eq. 11.1): its cell's (DDMP)
+        // or its domain's (GIMP).
+        p_local.resize(ns);
+        for (Index a = 0; a < ns; ++a)
+          p_local(a) = pressure_start_(nodes[a]) + pressure_scale_ * du(pressure_dof(nodes[a]));
+        if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
+                                   rm, cell_average ? &average : nullptr))
+          return false;
+        const double s_p = pressure_scale_;
+        f_local.resize(local);
+        f_local << rm.u.internal_force, s_p * rm.pressure_residual;
+        if (tangent) {
+          K_local.resize(local, local);
+          K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
+        }
+        commit(p, rm.u.state, rm.u.state_volume, rm.total_stress);
+      } else {
+        if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
+        f_local = r.internal_force;
+        if (tangent) K_local = r.stiffness;
+        commit(p, r.state, r.state_volume, r.state.cauchy_stress);
+      }
+      // The spring acts on the displacements, the first ns * Dim local unknowns.
+      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
+        add_target_spring(p, s.N, du_local, tangent != nullptr, f_local, K_local);
+      dofs.resize(local);
+      for (int l = 0; l < local; ++l) dofs[l] = local_dof(nodes, static_cast<int>(ns), l);
+      for (int l = 0; l < local; ++l) f_int(dofs[l]) += f_local(l);
+      if (!tangent) continue;
+      double* values = tangent->valuePtr();
+      for (int lc = 0; lc < local; ++lc) {
+        const Index col = free_index_[dofs[lc]];
+        if (col < 0) continue;
+        const int* at = inner + outer[col];
+        const int* end = inner + outer[col + 1];
+        // Stencil nodes are sorted and pressures come after displacements: rows ascend.
+        for (int lr = 0; lr < local; ++lr) {
+          const Index row = free_index_[dofs[lr]];
+          if (row < 0) continue;
+          at = std::lower_bound(at, end, row);
+          values[at - inner] += K_local(lr, lc);
+        }
       }
     }
   }
   return true;
+}
+
+void GridSystem::build_mixed_stencil_unions(const MaterialPoints& points) {
+  // Per active cell, the active nodes of the wide stencils of its mixed points, ascending: the
+  // unknowns the cell's volume average couples (theory §12).
+  union_start_.assign(active_cells_.size() + 1, 0);
+  union_nodes_.clear();
+  std::vector<Index> nodes;
+  for (std::size_t ci = 0; ci < active_cells_.size(); ++ci) {
+    nodes.clear();
+    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
+      if (is_mixed(points, p))
+        nodes.insert(nodes.end(), wide_nodes_.begin() + wide_start_[p],
+                     wide_nodes_.begin() + wide_start_[p + 1]);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    union_nodes_.insert(union_nodes_.end(), nodes.begin(), nodes.end());
+    union_start_[ci + 1] = static_cast<Index>(union_nodes_.size());
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -29,6 +29,10 @@
 namespace geompm {
 
 struct PointStartState;  // physics/point_kernel.hpp
+template <int NS, int Dim>
+struct AveragedVolumeChange;
+template <int NS, int Dim>
+struct Stencil;
 
 /// How points see the grid: the shape functions of their cell (standard MPM), DDMP gradients
 /// (docs/theory.md §8) or GIMP weights over the point's domain (§9; rectilinear grids only).
@@ -42,6 +46,9 @@ struct GridSettings {
   /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The
   /// system has pressure unknowns when any material is mixed.
   std::vector<char> mixed;
+  /// Mixed points see their cell's average volume change (F-bar, docs/theory.md §12), so that
+  /// their volumes cannot drift apart; false: each point its own.
+  bool mixed_volume_average = true;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -139,6 +146,15 @@ class GridSystem {
   template <class E, bool Mixed>
   bool internal_force_typed(const MaterialPoints& points, const Vector& du, Vector& f_int,
                             SparseMatrix* tangent);
+  /// Point p's weights in its cell (standard MPM): shape values and reference gradients.
+  template <class E>
+  Stencil<E::nodes, E::dim> cell_stencil(Index p) const;
+  /// The volume change of the step averaged over the mixed points of active cell ci (F-bar,
+  /// docs/theory.md eq. 12.1), with stencil_of(p) point p's weights over the rows of du.
+  template <int NS, int Dim, class StencilOf>
+  bool average_volume_change(const MaterialPoints& points, Index ci,
+                             const Eigen::Matrix<double, NS, Dim>& du, StencilOf&& stencil_of,
+                             AveragedVolumeChange<NS, Dim>& average) const;
   template <class E>
   void pressure_stabilisation(const MaterialPoints& points, Index ci,
                               Eigen::Matrix<double, E::nodes, E::nodes>& S) const;
@@ -167,6 +183,7 @@ class GridSystem {
   void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
   template <class E>
   void build_dual_domain_stencils(const MaterialPoints& points);
+  void build_mixed_stencil_unions(const MaterialPoints& points);
   template <int Dim>
   bool wide_stencil_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                  SparseMatrix* tangent);
@@ -209,6 +226,9 @@ class GridSystem {
   // spans [wide_start_[p], wide_start_[p + 1]).
   std::vector<Index> wide_start_, wide_nodes_;
   std::vector<double> wide_N_, wide_gradients_;
+  // With the volume average of mixed points: per active cell ci, the union of its mixed points'
+  // stencils (active ids, ascending) spans [union_start_[ci], union_start_[ci + 1]).
+  std::vector<Index> union_start_, union_nodes_;
 
   std::vector<double> target_stiffness_;  // per point; empty when no point has a target
   std::vector<Vec3> target_;

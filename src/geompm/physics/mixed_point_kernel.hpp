@@ -27,17 +27,19 @@ struct MixedKernelResult {
   Mat3 total_stress;                               // sigma~
 };
 
-/// p_nodes: the stencil's nodal pressures. Other arguments as integrate_point.
+/// p_nodes: the stencil's nodal pressures; average: the volume change averaged over the point's
+/// cell (F-bar, theory §12), or null for the point's own. Other arguments as integrate_point.
 template <int NS, int Dim>
 bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
                            const Eigen::Matrix<double, NS, Dim>& du,
                            const Eigen::Matrix<double, NS, 1>& p_nodes, bool axisymmetric,
-                           bool want_tangent, MixedKernelResult<NS, Dim>& out) {
+                           bool want_tangent, MixedKernelResult<NS, Dim>& out,
+                           const AveragedVolumeChange<NS, Dim>* average = nullptr) {
   using GC = GradientComponents<Dim>;
   constexpr int nc = GC::count;
   constexpr int n_dofs = KernelResult<NS, Dim>::n;
   GradientOperator<NS, Dim> B;
-  if (!deform_point(s, p, du, axisymmetric, want_tangent, out.u, B)) return false;
+  if (!deform_point(s, p, du, axisymmetric, want_tangent, out.u, B, average)) return false;
 
   const Mat3& sigma = out.u.state.cauchy_stress;
   const double p_mat = -sigma.trace() / 3.0;
@@ -77,11 +79,32 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   const Eigen::Matrix<double, nc, n_dofs> AB = a_mixed.lazyProduct(B);
   out.u.stiffness.noalias() = v * B.transpose().lazyProduct(AB);
 
-  // The divergence operator: the trace rows of B (theory eq. 11.4).
-  const Eigen::Matrix<double, 1, n_dofs> div = identity * B;
+  const Eigen::Matrix<double, 1, n_dofs> div = divergence_operator<NS, Dim>(B);
   out.K_up.noalias() = -v * div.transpose() * s.N.transpose();
   // d(v p^ - v p_mat) = v p^ div du + v/3 a_bar_mmkl grad(du)_kl  (p^ held).
-  const Eigen::Matrix<double, 1, n_dofs> dg = p_hat * div + (trace_rows * B) / 3.0;
+  Eigen::Matrix<double, 1, n_dofs> dg = p_hat * div + (trace_rows * B) / 3.0;
+
+  if (average) {
+    // F-bar (theory eqs. 12.5-12.6): the material sees dF^ = alpha dF on the grid's k = dim
+    // directions, alpha = (dJ^ / j)^(1/k), j their volume ratio, whose rate adds
+    // (1/k) (D^ - D_in) du to the scaled stretches (D_in the in-plane divergence), and the stress
+    // is scaled by j / dJ^ against the volume v of the forces:
+    //   d(v dev sigma)   += v [dev(a_bar : P_k) / k - dev sigma] (D^ - D_in) du
+    //   d(v p_mat)       -= v [tr(a_bar : P_k) / (3k) + p_mat] (D^ - D_in) du
+    // with a_bar : P_k the sum of a_bar's columns over the k scaled stretches.
+    constexpr int k = Dim;
+    Eigen::Matrix<double, nc, 1> scaled_columns = Eigen::Matrix<double, nc, 1>::Zero();
+    for (int d = 0; d < nc; ++d)
+      if (scaled_by_volume_average<Dim>(d)) scaled_columns += a_bar.col(d);
+    Eigen::Matrix<double, nc, 1> q = scaled_columns / k;
+    for (int c = 0; c < nc; ++c) q(c) -= sigma(GC::row[c], GC::col[c]);
+    const double q_trace = identity.dot(q);
+    q -= (q_trace / 3.0) * identity.transpose();  // dev
+    const Eigen::Matrix<double, 1, n_dofs> excess =
+        average->divergence - divergence_operator<NS, Dim>(B, true);
+    out.u.stiffness.noalias() += (v * (B.transpose() * q)) * excess;
+    dg += (identity.dot(scaled_columns) / (3.0 * k) + p_mat) * excess;
+  }
   out.K_pu.noalias() = (v / bulk) * s.N * dg;
   out.K_pp.noalias() = (v / bulk) * s.N * s.N.transpose();
   return true;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/LU>
+#include <cmath>
 
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/finite_strain.hpp"
@@ -62,7 +63,8 @@ struct KernelResult {
   Eigen::Matrix<double, n, 1> internal_force;
   Eigen::Matrix<double, n, n> stiffness;
   FiniteStrainState state;
-  double volume;  // current
+  double volume;        // current, v = v_n det dF: the volume the forces are integrated over
+  double state_volume;  // v_n det dF of the state's deformation (differs with a volume average)
 };
 template <class E>
 using PointKernelResult = KernelResult<E::nodes, E::dim>;
@@ -73,48 +75,124 @@ template <int NS, int Dim>
 using GradientOperator =
     Eigen::Matrix<double, GradientComponents<Dim>::count, KernelResult<NS, Dim>::n>;
 
-/// The kinematics and stress update of one point: from the stencil's nodal displacement
-/// increments du (row a = node a) to the point's trial state, current volume and gradient
-/// operator B. Returns false if the point's deformation is inadmissible (det dF <= 0): Newton
-/// then cuts the step back. Shared by the displacement and the mixed kernels.
+/// The volume change of a step averaged over the points of a cell (F-bar; docs/theory.md §12):
+/// the ratio dJ^ = sum_q v_q,n j_q / sum_q v_q,n (eq. 12.1), j_q the volume ratio of dF_q in the
+/// grid's directions, and its rate d(dJ^)/dJ^ = D^ du, D^ = sum_q v_q,n j_q D_q / sum_q v_q,n j_q,
+/// with D_q the in-plane divergence operator of point q on the current configuration (eq. 12.4).
 template <int NS, int Dim>
-bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
-                  const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
-                  KernelResult<NS, Dim>& out, GradientOperator<NS, Dim>& B) {
-  constexpr int dim = Dim;
-  using GC = GradientComponents<dim>;
-  constexpr int nc = GC::count;
-  const int nen = static_cast<int>(s.N.size());
-  const int n = nen * dim;
+struct AveragedVolumeChange {
+  double ratio = 1.0;
+  Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> divergence;
+};
 
-  // Incremental deformation gradient dF = I + d(du)/dX, with the hoop stretch r/R in
-  // axisymmetry (the out-of-plane stretch is 1 in plane strain).
+/// The components a volume average scales: the normal stretches of the grid's directions (in
+/// 2D the out-of-plane stretch, 1 in plane strain and r/R in axisymmetry, is the point's own).
+template <int Dim>
+constexpr bool scaled_by_volume_average(int c) {
+  using GC = GradientComponents<Dim>;
+  return GC::row[c] == GC::col[c] && GC::row[c] < Dim;
+}
+
+/// The incremental deformation gradient dF = I + d(du)/dX of the step, with the hoop stretch r/R
+/// in axisymmetry (the out-of-plane stretch is 1 in plane strain); `radius` = r.
+template <int NS, int Dim>
+Mat3 incremental_deformation_gradient(const Stencil<NS, Dim>& s, const PointStartState& p,
+                                      const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric,
+                                      double& radius) {
   Mat3 dF = Mat3::Identity();
-  const Eigen::Matrix<double, dim, dim> H = du.transpose() * s.dN_dX;
-  dF.template topLeftCorner<dim, dim>() += H;
-  double radius = 0.0;
+  dF.template topLeftCorner<Dim, Dim>() += du.transpose() * s.dN_dX;
+  radius = 0.0;
   if (axisymmetric) {
     const double R = p.position.x();
     radius = R + s.N.dot(du.col(0));
     dF(2, 2) = radius / R;
   }
-  if (!finite_strain_update(*p.material, dF, p.F, p.be, p.internal, want_tangent, out.state,
-                            GC::pairs, nc))
-    return false;
+  return dF;
+}
 
-  const double dJ = dF.determinant();
-  out.volume = p.volume * dJ;
-  const Eigen::Matrix<double, dim, dim> dF_inplane = dF.template topLeftCorner<dim, dim>();
-  const Eigen::Matrix<double, NS, dim> dN_dx = s.dN_dX * dF_inplane.inverse();
-
-  B.setZero(nc, n);
+/// The gradient operator B of a point on the configuration reached by dF: row c = component
+/// (row[c], col[c]) of G^{a,i}, column a*dim + i (docs/theory.md eq. 2.7).
+template <int NS, int Dim>
+void current_gradient_operator(const Stencil<NS, Dim>& s, const Mat3& dF, double radius,
+                               bool axisymmetric, GradientOperator<NS, Dim>& B) {
+  using GC = GradientComponents<Dim>;
+  constexpr int nc = GC::count;
+  const int nen = static_cast<int>(s.N.size());
+  const Eigen::Matrix<double, Dim, Dim> dF_inplane = dF.template topLeftCorner<Dim, Dim>();
+  const Eigen::Matrix<double, NS, Dim> dN_dx = s.dN_dX * dF_inplane.inverse();
+  B.setZero(nc, nen * Dim);
   for (int a = 0; a < nen; ++a)
     for (int c = 0; c < nc; ++c) {
       const int i = GC::row[c], j = GC::col[c];
-      if (i < dim && j < dim) B(c, a * dim + i) = dN_dx(a, j);
+      if (i < Dim && j < Dim) B(c, a * Dim + i) = dN_dx(a, j);
     }
   if (axisymmetric)
-    for (int a = 0; a < nen; ++a) B(nc - 1, a * dim + 0) = s.N(a) / radius;
+    for (int a = 0; a < nen; ++a) B(nc - 1, a * Dim + 0) = s.N(a) / radius;
+}
+
+/// The divergence operator of a point: the trace rows of B (theory eq. 11.4); `in_plane`: only
+/// the grid's directions (without the hoop term of axisymmetry), the rate of the volume average.
+template <int NS, int Dim>
+Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> divergence_operator(
+    const GradientOperator<NS, Dim>& B, bool in_plane = false) {
+  using GC = GradientComponents<Dim>;
+  Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> div =
+      Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n>::Zero(1, B.cols());
+  for (int c = 0; c < GC::count; ++c)
+    if (GC::row[c] == GC::col[c] && (!in_plane || GC::row[c] < Dim)) div += B.row(c);
+  return div;
+}
+
+/// The kinematics and stress update of one point: from the stencil's nodal displacement
+/// increments du (row a = node a) to the point's trial state, current volume and gradient
+/// operator B. With a cell's volume average, the material sees dF^ = (dJ^ / det dF)^(1/k) dF
+/// on the scaled components (F-bar, theory eq. 12.2) while B and the volume of the forces are
+/// those of dF itself. Returns false if the point's deformation is inadmissible (det dF <= 0):
+/// Newton then cuts the step back. Shared by the displacement and the mixed kernels.
+template <int NS, int Dim>
+bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
+                  const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
+                  KernelResult<NS, Dim>& out, GradientOperator<NS, Dim>& B,
+                  const AveragedVolumeChange<NS, Dim>* average = nullptr) {
+  using GC = GradientComponents<Dim>;
+  constexpr int nc = GC::count;
+  double radius = 0.0;
+  const Mat3 dF = incremental_deformation_gradient(s, p, du, axisymmetric, radius);
+  const double dJ = dF.determinant();
+  if (!(dJ > 0.0)) return false;
+  Mat3 dF_state = dF;
+  double state_ratio = dJ;
+  if (average) {
+    if (!(average->ratio > 0.0)) return false;
+    // The grid's directions take the averaged volume change (eq. 12.2); in 2D the out-of-plane
+    // stretch stays the point's own.
+    const double j = dF.template topLeftCorner<Dim, Dim>().determinant();
+    dF_state.template topLeftCorner<Dim, Dim>() *= std::pow(average->ratio / j, 1.0 / Dim);
+    state_ratio = dF_state.determinant();
+  }
+  if (!finite_strain_update(*p.material, dF_state, p.F, p.be, p.internal, want_tangent, out.state,
+                            GC::pairs, nc))
+    return false;
+  out.volume = p.volume * dJ;
+  out.state_volume = p.volume * state_ratio;
+  current_gradient_operator(s, dF, radius, axisymmetric, B);
+  return true;
+}
+
+/// The volume ratio of a point's step in the grid's directions (det of dF's dim x dim block; det
+/// dF in plane strain and 3D) and its rate operator, for a cell's volume average
+/// (AveragedVolumeChange). False if det dF <= 0.
+template <int NS, int Dim>
+bool point_volume_change(const Stencil<NS, Dim>& s, const PointStartState& p,
+                         const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, double& dJ,
+                         Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n>& divergence) {
+  double radius = 0.0;
+  const Mat3 dF = incremental_deformation_gradient(s, p, du, axisymmetric, radius);
+  if (!(dF.determinant() > 0.0)) return false;
+  dJ = dF.template topLeftCorner<Dim, Dim>().determinant();
+  GradientOperator<NS, Dim> B;
+  current_gradient_operator(s, dF, radius, axisymmetric, B);
+  divergence = divergence_operator<NS, Dim>(B, true);
   return true;
 }
 

@@ -9,17 +9,36 @@ namespace geompm {
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
                           const NewtonSettings& settings, Vector& x, SparseMatrix& tangent) {
   NewtonResult result;
-  Vector residual;
+  Vector residual, dx;
   double force_scale = 0.0;
   double last_correction = 0.0;
   bool analysed = false;
+  int halvings = 0;  // of the current correction
   for (int k = 0;; ++k) {
-    if (!problem.evaluate(x, residual, force_scale, &tangent)) {
+    const bool admissible = problem.evaluate(x, residual, force_scale, &tangent);
+    const double norm = admissible ? residual.norm() : 0.0;
+    const double relative = norm / std::max(force_scale, 1e-300);
+    // Backtracking: the correction overshot (the residual grew, or a point turned inside out), so
+    // go back half of it. For a small enough fraction the Newton direction reduces the residual;
+    // a plastic switch at a few points, which can throw the full correction off, is approached
+    // in shorter strides instead of failing the step.
+    const bool overshot =
+        !admissible || !std::isfinite(relative) || (k > 0 && relative > result.residuals.back());
+    if (k > 0 && overshot && halvings < settings.max_halvings) {
+      dx *= 0.5;
+      x -= dx;
+      const double scale = problem.increment_norm(x);
+      last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+      ++halvings;
+      ++result.halvings;
+      --k;
+      continue;
+    }
+    halvings = 0;
+    if (!admissible) {
       result.failure = "inadmissible deformation (a point's volume became <= 0)";
       return result;
     }
-    const double norm = residual.norm();
-    const double relative = norm / std::max(force_scale, 1e-300);
     result.residuals.push_back(relative);
     if (!std::isfinite(relative)) {
       result.failure = "the residual is not finite";
@@ -59,7 +78,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
         analysed = true;
       }
       solver.factorize(tangent);
-      const Vector dx = solver.solve(residual);
+      dx = solver.solve(residual);
       x += dx;
       ++result.iterations;
       const double scale = problem.increment_norm(x);

@@ -29,11 +29,15 @@ struct NewtonSettings {
   double displacement_tolerance = 1e-8;
   double divergence_factor =
       1e8;  // residual growth over the first residual that counts as divergence
+  /// Backtracking: a correction that makes the residual grow, or turns a point inside out, is
+  /// halved, at most this many times in a row (0: plain Newton).
+  int max_halvings = 0;
 };
 
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;               // linear solves
+  int halvings = 0;                 // corrections halved by the backtracking
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   std::string failure;              // why it did not converge

@@ -145,6 +145,66 @@ TEST(GridSystemTangent, GimpThreeD) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Gimp);
 }
 
+// The cell-averaged volume change of mixed points (F-bar, docs/theory.md eqs. 12.1-12.3): after a
+// random increment every mixed point of a cell has changed volume by the same ratio, and the
+// cell's points together by exactly as much as without the average (sum_q v_q,n det dF_q);
+// with `per_point` the ratios differ, so the check can fail.
+void check_volume_average(const std::string& example, bool average) {
+  auto spec = testing::read_example(example);
+  for (auto& material : spec.materials) {
+    material.model = mixed_tresca.model;
+    material.parameters = mixed_tresca.parameters;
+  }
+  auto model = build_model(spec);
+  GridSettings settings;
+  settings.kinematics = spec.kinematics;
+  settings.mixed.assign(spec.materials.size(), 1);
+  settings.mixed_volume_average = average;
+  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  grid.initialise(model->points);
+  grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Vector du = Vector::Zero(grid.num_dofs());
+  for (Index d = 0; d < grid.pressure_dof(0); ++d) du(d) = 2e-3 * u(rng);
+  MaterialPoints own = model->points, averaged = model->points;
+  settings.mixed_volume_average = false;
+  GridSystem per_point(model->mesh, model->topology, model->material_pointers(), settings);
+  per_point.initialise(own);
+  ASSERT_TRUE(per_point.commit_state(own, du));
+  ASSERT_TRUE(grid.commit_state(averaged, du));
+  // Points are sorted by cell in both copies (initialise sorted them the same way).
+  double largest_spread = 0.0;
+  for (Index p = 0; p < averaged.size();) {
+    Index end = p;
+    double start = 0.0, with_average = 0.0, without = 0.0;
+    double low = 1e300, high = -1e300;
+    for (; end < averaged.size() && averaged.cell[end] == averaged.cell[p]; ++end) {
+      const double ratio = averaged.volume[end] / model->points.volume[end];
+      low = std::min(low, ratio);
+      high = std::max(high, ratio);
+      start += model->points.volume[end];
+      with_average += averaged.volume[end];
+      without += own.volume[end];
+    }
+    largest_spread = std::max(largest_spread, high - low);
+    if (average) EXPECT_NEAR(with_average, without, 1e-12 * start);
+    p = end;
+  }
+  if (average)
+    EXPECT_LT(largest_spread, 1e-12);
+  else
+    EXPECT_GT(largest_spread, 1e-4);
+}
+
+TEST(GridSystemVolumeAverage, PointsOfACellShareItsVolumeChange) {
+  check_volume_average("oedometer/oedometer.yaml", true);
+  check_volume_average("column/column_3d.yaml", true);
+}
+TEST(GridSystemVolumeAverage, WithoutItEachPointKeepsItsOwn) {
+  check_volume_average("oedometer/oedometer.yaml", false);
+}
+
 // DDMP gradients and GIMP weights reproduce a linear displacement field exactly: a uniform
 // strain increment gives the same stress at every point, as with standard MPM, and convect
 // moves every point with the field.

@@ -57,6 +57,17 @@ output:
     - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}
 )m";
 
+TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
+  std::string text = kLoadingModel + "numerics: {mixed_volume: per_point}\n";
+  const std::string step = "    time_step: 0.1\n";
+  text.replace(text.find(step), step.size(), step + "    newton: {line_search: 4}\n");
+  const spec::Model model = read_model_from_string(text, "model.yaml");
+  EXPECT_FALSE(model.numerics.mixed_volume_average);
+  EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
+  EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
+  EXPECT_TRUE(read_model_from_string(kLoadingModel, "model.yaml").numerics.mixed_volume_average);
+}
+
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
   const spec::Model model = read_model_from_string(kLoadingModel, "model.yaml");
   const spec::Body& ground = model.bodies.at(0);
@@ -305,6 +316,20 @@ const std::vector<LoadingCase> kLoadingCases = {
      "boundary: footing_base, component: y, name: settlement",
      "output.history[0].boundary",
      "only for reaction and displacement"},
+
+    // Newton's backtracking and the volume change of mixed points.
+    {"line_search_negative",
+     {{"    time_step: 0.1\n", "    time_step: 0.1\n    newton: {line_search: -1}\n"}},
+     "newton: {line_search: -1}",
+     "phases[1].newton.line_search",
+     "expected a whole number from 0 to 20"},
+    {"mixed_volume_unknown",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {mixed_volume: averaged}\n"}},
+     "mixed_volume: averaged",
+     "numerics.mixed_volume",
+     "cell_average"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
