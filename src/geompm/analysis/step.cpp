@@ -199,13 +199,14 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
           footing.spec().penalty_factor *
           model_.materials[points.material[p]]->reference_modulus() / reach);
       c.rough = footing.rough();
-      if (c.rough) {
-        // Sticks where it is first touched: its horizontal position relative to the footing
-        // at the start of the step, unless it has touched before.
-        const auto anchor = footing.anchor(points.id[p]);
-        c.anchor = anchor ? *anchor : Vec3(top - footing.done());
-        c.anchor(v) = 0.0;
-      }
+      // A point pressed against the base at the end of the last step stays in contact in both
+      // directions through this step's iterations (eq. 12.8). A rough one sticks where it was
+      // first touched: its horizontal position relative to the footing at the start of the step
+      // of its first contact.
+      const auto anchor = footing.anchor(points.id[p]);
+      c.bilateral = anchor.has_value();
+      c.anchor = anchor ? *anchor : Vec3(top - footing.done());
+      c.anchor(v) = 0.0;
       slot[p] = static_cast<int>(candidates.size());
       candidates.emplace_back(p, c);
       acts[p] = 1;
@@ -245,7 +246,7 @@ void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepR
       const Vec3 u = grid_.interpolate_at(points, p, step.offset[p], result.displacement);
       const FootingContactForce c = footing_contact(step.pose[k], point, u, dim, axisymmetric);
       force -= c.force;
-      if (c.touching && point.rough) touching[k][points.id[p]] = point.anchor;
+      if (c.on_base && c.penetration > 0.0) touching[k][points.id[p]] = point.anchor;
     }
     result.footing_reactions.try_emplace(phase.footings[k].name(), Vec3::Zero()).first->second +=
         force;

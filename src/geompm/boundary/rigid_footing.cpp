@@ -13,7 +13,7 @@ FootingContactForce footing_contact(const FootingPose& pose, const FootingContac
   const Vec3 x = point.position + u;
   // Penetration of the point's domain through the base (eq. 12.1).
   const double g = x(v) + point.half(v) - pose.base;
-  if (!(g > 0.0)) return c;
+  if (!(g > 0.0) && !point.bilateral) return c;
   // Contact area: the part of the domain under the footprint (eq. 12.2), and its derivative
   // with respect to the point's horizontal position. Along each horizontal axis the overlap of
   // (x - l, x + l) with (low, high) is min(x + l, high) - max(x - l, low): its ends move with x
@@ -42,9 +42,56 @@ FootingContactForce footing_contact(const FootingPose& pose, const FootingContac
   }
   c.touching = true;
   c.penetration = g;
-  c.area = area;
   const double k = point.kappa;
-  // Normal force kappa g A, pushing the point down (eq. 12.3), and its derivative (eq. 12.5).
+  // The footing's side (eq. 12.5): a domain that reaches through the base by more than it
+  // reaches past the nearest edge (soil heaved beside the footing, drifting over its edge) is
+  // pushed out sideways through the side, by as much as it overlaps, instead of down by g. The
+  // force has the same size at the switch (kappa g o either way in 2D), and goes to zero with
+  // the overlap.
+  int side = -1;
+  double through = g, sign = 0.0;
+  for (int t = 0; t < v; ++t) {
+    const double past_high = pose.high(t) - (x(t) - point.half(t));
+    const double past_low = x(t) + point.half(t) - pose.low(t);
+    // The axis is no side: a disc has none at r = 0.
+    const bool low_is_side = !(axisymmetric && pose.low(t) <= 0.0);
+    if (past_high < through) {
+      side = t, through = past_high, sign = 1.0;
+    }
+    if (low_is_side && past_low < through) {
+      side = t, through = past_low, sign = -1.0;
+    }
+  }
+  if (side >= 0) {
+    // f = -sign kappa s g P on the side's normal axis: s the overlap past the edge (ds/dx =
+    // -sign), g the height of the domain through the base, P the side's extent along the other
+    // horizontal axis (1 in plane strain; the edge's radius per radian in axisymmetry).
+    const double edge = sign > 0 ? pose.high(side) : pose.low(side);
+    double P = 1.0;
+    Vec3 dP = Vec3::Zero();
+    if (axisymmetric) {
+      P = edge;
+    } else {
+      for (int t = 0; t < v; ++t)
+        if (t != side) {
+          const double lo = std::max(x(t) - point.half(t), pose.low(t));
+          const double hi = std::min(x(t) + point.half(t), pose.high(t));
+          P = hi - lo;
+          dP(t) = (x(t) + point.half(t) < pose.high(t) ? 1.0 : 0.0) -
+                  (x(t) - point.half(t) > pose.low(t) ? 1.0 : 0.0);
+        }
+    }
+    c.area = g * P;
+    c.force(side) = -sign * k * through * g * P;
+    c.stiffness(side, side) = k * g * P;
+    c.stiffness(side, v) = -sign * k * through * P;
+    for (int t = 0; t < v; ++t)
+      if (t != side) c.stiffness(side, t) = -sign * k * through * g * dP(t);
+    return c;
+  }
+  c.on_base = true;
+  c.area = area;
+  // Normal force kappa g A, pushing the point down (eq. 12.3), and its derivative (eq. 12.6).
   c.force(v) = k * g * area;
   c.stiffness(v, v) = k * area;
   for (int t = 0; t < v; ++t) c.stiffness(v, t) = k * g * d_area(t);

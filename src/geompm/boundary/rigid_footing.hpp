@@ -33,6 +33,10 @@ struct FootingContactPoint {
   Vec3 half = Vec3::Zero();
   double kappa = 0.0;
   bool rough = false;
+  /// Touching at the start of the step: held in both directions through the step's Newton
+  /// iterations (eq. 12.8), so that its contact does not flip on and off from one iteration to
+  /// the next; released at the end of a step that leaves it in tension.
+  bool bilateral = false;
   Vec3 anchor = Vec3::Zero();
 };
 
@@ -43,6 +47,7 @@ struct FootingContactForce {
   double penetration = 0.0;       // g > 0 when touching
   double area = 0.0;              // A: the point's domain under the footprint (per radian)
   bool touching = false;
+  bool on_base = false;  // false when touching through the side (eq. 12.5)
 };
 
 /// The contact law: zero unless the point's domain reaches through the base (g > 0) and overlaps
@@ -68,10 +73,11 @@ class RigidFooting {
   /// The displacement since the phase start at the last converged step.
   const Vec3& done() const { return done_; }
 
-  /// Where point `id` sticks, or nothing if it has not touched the base yet (rough only).
+  /// Where point `id` sticks (rough), or nothing if it did not touch the base at the end of the
+  /// last converged step.
   std::optional<Vec3> anchor(Index id) const;
-  /// After a converged step: the displacement reached, and the points touching the base at its
-  /// end with the anchors they used (points no longer touching lose theirs).
+  /// After a converged step: the displacement reached, and the points pressed against the base
+  /// at its end with the anchors they used (the others lose theirs).
   void commit(const Vec3& displacement, std::unordered_map<Index, Vec3> touching);
 
  private:

@@ -48,6 +48,26 @@ TEST(RigidFootingContact, NormalForceIsKappaTimesPenetrationTimesArea) {
   EXPECT_NEAR(c.force.x(), 1e5 * 0.1 * (0.21 - 0.004 - 0.2), 1e-9);
 }
 
+TEST(RigidFootingContact, SoilHeavedBesideTheFootingIsPushedOutThroughItsSide) {
+  // A domain 0.01 above the base that reaches 0.002 over the edge x = 0.5: it is pushed out
+  // sideways by kappa s g (eq. 12.5), not down by kappa g o.
+  const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
+  FootingContactPoint point;
+  point.position = Vec3(0.523, 1.01, 0.0);
+  point.half = Vec3(0.025, 0.0, 0.0);
+  point.kappa = 1e5;
+  const auto c = footing_contact(pose, point, Vec3::Zero(), 2, false);
+  ASSERT_TRUE(c.touching);
+  EXPECT_FALSE(c.on_base);
+  EXPECT_NEAR(c.force.x(), -1e5 * 0.002 * 0.01, 1e-9);  // f_int sign: the point is pushed to +x
+  EXPECT_EQ(c.force.y(), 0.0);
+  // Just under the base instead, the same domain is pressed down by the base on its overlap.
+  point.position.y() = 1.001;
+  const auto d = footing_contact(pose, point, Vec3::Zero(), 2, false);
+  EXPECT_TRUE(d.on_base);
+  EXPECT_NEAR(d.force.y(), 1e5 * 0.001 * 0.002, 1e-9);
+}
+
 TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
   // A row of points whose domains tile [0, 1] (20 of them), pressed uniformly: the contact areas
   // add up to the footprint's width, wherever its edge cuts a domain.
