@@ -129,7 +129,7 @@ struct RigidFooting {
   std::array<std::string, 3> components;  // every component of the model given
   std::vector<std::string> bodies;        // the bodies it touches; empty: every body
   std::optional<double> penalty;          // kappa (stress per length), or ...
-  double penalty_factor = 100.0;          // ... kappa = factor x E / h of each point
+  double penalty_factor = 10.0;           // ... kappa = factor x E / h of each point
   SourceLocation source;
 };
 
