@@ -830,7 +830,9 @@ def section_footing(args, work):
         w(f"**{verdict(rising).capitalize()}** with DDMP: the run finishes, the resistance starts near 2 + π "
           f"(q/s_u = {large.q_at(S, 0.1):.2f} at 0.1 B) and rises with embedment to "
           f"{large.q_at(S, 1.0):.2f} at 1 B, with cell-crossing noise of {noise * 100:.0f} %. "
-          "**Not reached** with standard MPM and GIMP, which stop before 1 B.")
+          + " ".join(f"With {k}: {'finished' if ld[k].ok else 'stopped before 1 B'}"
+                     + (f" (q/s_u = {ld[k].q_at(S, 1.0):.2f} at 1 B)." if ld[k].ok else ".")
+                     for k in ("standard", "gimp")))
     else:
         w(f"**Not reached:** the run failed: `{large.summary}`.")
     w("")
@@ -1111,12 +1113,12 @@ FOOTING_DISCUSSION_7 = (
     "h = D/20 against the strip's +7 % at B/20), and it converges towards N_c slowly (+36 %, +17 %, "
     "+11 % at h = D/10, D/20, D/40). The rigid footings remove the edge effect but not the rest: at "
     "h = D/20 they carry 6.4–6.8 (rough) and 6.2–6.7 (smooth) between 0.02 and 0.06 D, 7–14 % above "
-    "N_c and, as for the strip, smooth above rough where theory has 5.69 < 6.05. At 0.05 D the rough "
+    "N_c, smooth mostly below rough (by about 4 % at 0.05 D, where theory has 6 %). At 0.05 D the rough "
     "rigid footing is no lower than the steel block (whose curve rises further to 0.1 D); what "
     "remains is the discretisation of the mechanism, which in axisymmetry converges more slowly "
     "than in plane strain (the steel block is still +11 % at h = D/40). The rigid footings stop "
-    "before 0.1 D — smooth at about 0.06 D, rough at about 0.08 D at h = D/20, and earlier at "
-    "h = D/10 — when a point under the footing's edge collapses (the volume drift of §4), so the "
+    "before 0.1 D — smooth at about 0.06 D, rough at about 0.08 D at h = D/20 — when a point under "
+    "the footing's edge collapses (the volume drift of §4), so the "
     "examples push them to 0.05 D only. **Not reached**: N_c within 5 % for any circular footing.")
 FOOTING_DISCUSSION_8 = (
     "**Why the band is missed.** Low-order cells with associated Mohr–Coulomb flow lock in the same "
