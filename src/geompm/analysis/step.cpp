@@ -149,7 +149,7 @@ struct StepSolver::FootingStep {
   std::vector<FootingPose> pose;
   std::vector<std::vector<std::pair<Index, FootingContactPoint>>> points;
   std::vector<std::vector<int>> slot;  // per footing and point: its entry in `points`, or -1
-  std::vector<std::unordered_map<Index, Vec3>> touching;  // point id -> anchor (rough)
+  std::vector<std::unordered_map<Index, Vec3>> touching;  // point id -> anchor, per footing
   std::vector<Vec3> offset;  // per point: from the point to the top of its domain
 };
 
