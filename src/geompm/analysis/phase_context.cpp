@@ -15,6 +15,7 @@ PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(
       if (!m.components[d].empty()) motion.components[d] = Expression(m.components[d]);
     motions.push_back(std::move(motion));
   }
+  for (const auto& f : phase.footings) footings.emplace_back(f, model.mesh.dim());
   for (const auto& l : phase.loads) {
     Load load;
     load.set = model.point_set_bit(l.point_set);

@@ -9,6 +9,7 @@
 #include "geompm/analysis/model.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
+#include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/core/expression.hpp"
 
 namespace geompm {
@@ -28,7 +29,8 @@ struct PhaseContext {
   const spec::Phase* spec = nullptr;
   std::vector<ResolvedFixity> fixities;
   std::vector<ResolvedGridMotion> grid_motions;  // prescribed motion of grid nodes
-  std::vector<Motion> motions;  // `done` is advanced by the step solver on convergence
+  std::vector<Motion> motions;         // `done` is advanced by the step solver on convergence
+  std::vector<RigidFooting> footings;  // committed by the step solver on convergence
   std::vector<Load> loads;
 
   PhaseContext(const Model& model, const spec::Phase& phase);

@@ -1,7 +1,9 @@
 #include "geompm/analysis/step.hpp"
 
 #include <cmath>
+#include <unordered_map>
 
+#include "geompm/physics/gimp_weights.hpp"
 #include "geompm/solver/newmark.hpp"
 
 namespace geompm {
@@ -140,6 +142,118 @@ void StepSolver::prescribe_point_motions(const PhaseContext& phase, double t0, d
   grid_.set_point_targets(std::move(stiffness), std::move(target), std::move(mask));
 }
 
+// The rigid footings of a step (docs/theory.md §13): each footing's displacement and pose at the
+// end of the step, the points that may touch it with what the contact law needs of them, and,
+// after convergence, the points touching it with the anchors they used.
+struct StepSolver::FootingStep {
+  std::vector<Vec3> displacement;
+  std::vector<FootingPose> pose;
+  std::vector<std::vector<std::pair<Index, FootingContactPoint>>> points;
+  std::vector<std::vector<int>> slot;  // per footing and point: its entry in `points`, or -1
+  std::vector<std::unordered_map<Index, Vec3>> touching;  // point id -> anchor, per footing
+  std::vector<Vec3> offset;  // per point: from the point to the top of its domain
+};
+
+void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t1,
+                                  FootingStep& step) {
+  if (phase.footings.empty()) return;
+  const MaterialPoints& points = model_.points;
+  const Index n = points.size();
+  const int dim = grid_.dim(), v = dim - 1;
+  const bool axisymmetric = model_.kinematics() == Kinematics::Axisymmetric;
+  std::vector<char> acts(n, 0);
+  std::vector<Vec3> offset(n, Vec3::Zero());
+  for (Index p = 0; p < n; ++p) {
+    // The footing touches a point at the top of its domain: the image of the seeded domain's
+    // top under the point's F (eq. 13.1), carried by the step's deformation within the step.
+    offset[p] = points.initial_half_size[p](v) * points.deformation_gradient[p].col(v);
+    for (int i = dim; i < 3; ++i) offset[p](i) = 0.0;
+  }
+  for (const RigidFooting& footing : phase.footings) {
+    const Vec3 d = footing.displacement(t0, t1);
+    const FootingPose pose = footing.pose(d);
+    std::vector<char> in_body(model_.spec.bodies.size(), footing.spec().bodies.empty());
+    for (const std::string& body : footing.spec().bodies)
+      for (std::size_t b = 0; b < in_body.size(); ++b)
+        if (model_.spec.bodies[b].name == body) in_body[b] = 1;
+    std::vector<std::pair<Index, FootingContactPoint>> candidates;
+    std::vector<int> slot(n, -1);
+    for (Index p = 0; p < n; ++p) {
+      if (!in_body[points.body[p]]) continue;
+      // Its horizontal extent: the cpGIMP half-lengths (eq. 9.4) at the start of the step.
+      Vec3 half =
+          particle_half_lengths(points.initial_half_size[p], points.deformation_gradient[p], dim);
+      half(v) = 0.0;
+      const Vec3 top = points.position[p] + offset[p];
+      // A point may touch the base in this step if its domain, grown by a cell, reaches it.
+      const double reach = grid_.cell_size(p);
+      bool near = top(v) > pose.base - reach;
+      for (int t = 0; t < v; ++t)
+        near = near && top(t) + half(t) > pose.low(t) - reach &&
+               top(t) - half(t) < pose.high(t) + reach;
+      if (!near) continue;
+      FootingContactPoint c;
+      c.position = top;
+      c.half = half;
+      // kappa = factor x E / h by default (eq. 13.7): the point's stiffness over its cell size.
+      c.kappa = footing.spec().penalty.value_or(
+          footing.spec().penalty_factor *
+          model_.materials[points.material[p]]->reference_modulus() / reach);
+      c.rough = footing.rough();
+      // A point pressed against the base at the end of the last step stays in contact in both
+      // directions through this step's iterations (eq. 13.8). A rough one sticks where it was
+      // first touched: its horizontal position relative to the footing at the start of the step
+      // of its first contact.
+      const auto anchor = footing.anchor(points.id[p]);
+      c.bilateral = anchor.has_value();
+      c.anchor = anchor ? *anchor : Vec3(top - footing.done());
+      c.anchor(v) = 0.0;
+      slot[p] = static_cast<int>(candidates.size());
+      candidates.emplace_back(p, c);
+      acts[p] = 1;
+    }
+    step.displacement.push_back(d);
+    step.pose.push_back(pose);
+    step.points.push_back(std::move(candidates));
+    step.slot.push_back(std::move(slot));
+  }
+  step.offset = offset;
+  grid_.set_point_force_law(std::move(acts), std::move(offset),
+                            [&step, dim, axisymmetric](Index p, const Vec3& u, Vec3& f, Mat3& K) {
+                              f.setZero();
+                              K.setZero();
+                              for (std::size_t k = 0; k < step.pose.size(); ++k)
+                                if (const int at = step.slot[k][p]; at >= 0) {
+                                  const FootingContactForce c =
+                                      footing_contact(step.pose[k], step.points[k][at].second, u,
+                                                      dim, axisymmetric);
+                                  f += c.force;
+                                  K += c.stiffness;
+                                }
+                            });
+}
+
+void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result) {
+  // At the converged increment (before the points move): the force each footing exerts on the
+  // soil, and the points touching it, which keep (or take) their anchors.
+  const MaterialPoints& points = model_.points;
+  const int dim = grid_.dim();
+  const bool axisymmetric = model_.kinematics() == Kinematics::Axisymmetric;
+  auto& touching = step.touching;
+  touching.assign(phase.footings.size(), {});
+  for (std::size_t k = 0; k < phase.footings.size(); ++k) {
+    Vec3 force = Vec3::Zero();
+    for (const auto& [p, point] : step.points[k]) {
+      const Vec3 u = grid_.interpolate_at(points, p, step.offset[p], result.displacement);
+      const FootingContactForce c = footing_contact(step.pose[k], point, u, dim, axisymmetric);
+      force -= c.force;
+      if (c.on_base && c.penetration > 0.0) touching[k][points.id[p]] = point.anchor;
+    }
+    result.footing_reactions.try_emplace(phase.footings[k].name(), Vec3::Zero()).first->second +=
+        force;
+  }
+}
+
 StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   StepResult result;
   MaterialPoints& points = model_.points;
@@ -160,6 +274,9 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   // Prescribed motions of point sets: penalty springs on the points (docs/theory.md §5).
   std::vector<Vec3> prescribed;
   prescribe_point_motions(phase, t0, t1, prescribed);
+  // Rigid footings: penalty contact at the points (docs/theory.md §13).
+  FootingStep footings;
+  prepare_footings(phase, t0, t1, footings);
 
   // Fixities of grid nodes.
   result.constrained.assign(n_dofs, 0);
@@ -218,12 +335,20 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
       if (points.sets[p] >> phase.motions[m].set & 1u) force += grid_.point_reactions()[p];
     result.set_reactions.try_emplace(phase.motions[m].set, Vec3::Zero()).first->second += force;
   }
+  if (!phase.footings.empty()) footing_reactions(phase, footings, result);
   convect_and_relocate(result, dt, dynamic);
   if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove) {
     for (std::size_t m = 0; m < phase.motions.size(); ++m) {
       const Vec3 reached = prescribed[m];
       for (int i = 0; i < 3; ++i)
         if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
+    }
+    for (std::size_t k = 0; k < phase.footings.size(); ++k) {
+      RigidFooting& footing = phase.footings[k];
+      Vec3& done =
+          model_.footing_displacement.try_emplace(footing.name(), Vec3::Zero()).first->second;
+      done += footings.displacement[k] - footing.done();
+      footing.commit(footings.displacement[k], std::move(footings.touching[k]));
     }
     for (std::size_t m = 0; m < phase.grid_motions.size(); ++m) {
       Vec3& done = model_.grid_displacement.try_emplace(phase.grid_motions[m].name, Vec3::Zero())

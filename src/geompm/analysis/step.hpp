@@ -23,6 +23,7 @@ struct StepResult {
   Vector reaction;                    // f_int + M a - f_ext, non-zero at constrained dofs
   std::vector<char> constrained;      // per dof
   std::map<int, Vec3> set_reactions;  // point-set bit -> force its prescribed motion exerts
+  std::map<std::string, Vec3> footing_reactions;  // rigid footing -> force it exerts on the soil
   Vec3 gravity = Vec3::Zero();
   std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
 };
@@ -42,6 +43,9 @@ class StepSolver {
   void convect_and_relocate(StepResult& result, double dt, bool dynamic);
   void prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
                                std::vector<Vec3>& prescribed);
+  struct FootingStep;
+  void prepare_footings(const PhaseContext& phase, double t0, double t1, FootingStep& step);
+  void footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result);
 
   Model& model_;
   LinearSolver& solver_;

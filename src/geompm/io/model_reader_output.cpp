@@ -43,7 +43,8 @@ void check_column_name(const yaml::Node& at, bool named_by_user, const std::stri
 
 spec::History read_history(const yaml::Node& node, const Context& context,
                            const std::vector<spec::History>& earlier) {
-  const yaml::Map section = node.map({"quantity", "boundary", "point_set", "component", "name"});
+  const yaml::Map section =
+      node.map({"quantity", "boundary", "point_set", "footing", "component", "name"});
   spec::History history;
   history.source = node.where();
   std::vector<std::string> quantities = vector_quantities;
@@ -51,24 +52,29 @@ spec::History read_history(const yaml::Node& node, const Context& context,
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);
 
   if (contains(vector_quantities, quantity)) {
-    // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes.
+    // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes;
+    // so has a rigid footing.
     const bool on_boundary = quantity == "reaction" || quantity == "displacement";
     const std::string target =
-        on_boundary ? section.exactly_one_of({"boundary", "point_set"}) : "point_set";
+        on_boundary ? section.exactly_one_of({"boundary", "point_set", "footing"}) : "point_set";
     if (!on_boundary)
-      if (auto boundary = section.find("boundary"))
-        boundary->fail(
-            fmt::format("{} is measured on a point set: give point_set (a boundary "
-                        "is only for reaction and displacement)",
-                        quantity));
+      for (const char* key : {"boundary", "footing"})
+        if (auto other = section.find(key))
+          other->fail(
+              fmt::format("{} is measured on a point set: give point_set (a {} "
+                          "is only for reaction and displacement)",
+                          quantity, key));
     if (target == "boundary")
       history.boundary = read_boundary_name(section.required("boundary"), context);
+    else if (target == "footing")
+      history.footing =
+          read_reference(section.required("footing"), "rigid footing", context.footings);
     else
       history.point_set =
           read_reference(section.required("point_set"), "point set", context.point_sets);
     history.component = read_component(section.required("component"), context.dimension);
   } else {
-    for (const char* key : {"boundary", "point_set", "component"})
+    for (const char* key : {"boundary", "point_set", "footing", "component"})
       if (auto value = section.find(key))
         value->fail(
             fmt::format("{} is one number for the whole model: it takes no {}", quantity, key));
@@ -81,6 +87,7 @@ spec::History read_history(const yaml::Node& node, const Context& context,
     history.name = quantity;
     if (!history.boundary.empty()) history.name += "_" + history.boundary;
     if (!history.point_set.empty()) history.name += "_" + history.point_set;
+    if (!history.footing.empty()) history.name += "_" + history.footing;
     if (history.component >= 0)
       history.name += std::string("_") + component_name(history.component);
   }

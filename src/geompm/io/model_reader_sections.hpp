@@ -33,6 +33,8 @@ struct Context {
   std::vector<std::string> point_sets;
   /// Named node sets: boundaries too (read_boundary_name accepts them).
   std::vector<std::string> node_sets;
+  /// Rigid footings of the phases (a name may recur: the same footing in several phases).
+  std::vector<std::string> footings;
 };
 
 // Sections, in file order.
@@ -42,7 +44,7 @@ spec::Region read_region(const yaml::Node& node, const Context& context);
 std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
 std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
 std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& context);
-std::vector<spec::Phase> read_phases(const yaml::Node& node, const Context& context);
+std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
 

@@ -71,6 +71,30 @@ Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector
   return value;
 }
 
+Vec3 GridSystem::interpolate_at(const MaterialPoints& points, Index p, const Vec3& offset,
+                                const Vector& nodal) const {
+  Vec3 value = Vec3::Zero();
+  const auto add = [&](Index node, double N, const double* gradient) {
+    double w = N;
+    for (int d = 0; d < dim_; ++d) w += gradient[d] * offset(d);
+    for (int i = 0; i < dim_; ++i) value(i) += w * nodal(node * dim_ + i);
+  };
+  if (wide_stencil()) {
+    for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a)
+      add(wide_nodes_[a], wide_N_[a], wide_gradients_.data() + std::size_t(a) * dim_);
+    return value;
+  }
+  // Cell gradients are stored column-major (nen x dim) per point.
+  const auto nodes = mesh_.cell_nodes(points.cell[p]);
+  const double* G = gradients_.data() + std::size_t(p) * nen_ * dim_;
+  for (int a = 0; a < nen_; ++a) {
+    double gradient[3] = {0, 0, 0};
+    for (int d = 0; d < dim_; ++d) gradient[d] = G[d * nen_ + a];
+    add(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a], gradient);
+  }
+  return value;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Phase 1: initialise
 // ---------------------------------------------------------------------------------------------
@@ -149,6 +173,9 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   cell_size_.assign(n_points, 0.0);
   target_stiffness_.clear();
   point_reaction_.clear();
+  force_law_acts_.clear();
+  force_law_offset_.clear();
+  force_law_ = nullptr;
   const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
 #pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
@@ -362,6 +389,13 @@ void GridSystem::set_point_targets(std::vector<double> stiffness, std::vector<Ve
   point_reaction_.assign(target_stiffness_.size(), Vec3::Zero());
 }
 
+void GridSystem::set_point_force_law(std::vector<char> acts, std::vector<Vec3> offset,
+                                     PointForceLaw law) {
+  force_law_acts_ = std::move(acts);
+  force_law_offset_ = std::move(offset);
+  force_law_ = std::move(law);
+}
+
 void GridSystem::set_constraints(const std::vector<char>& constrained) {
   const Index n_dofs = num_dofs();
   free_index_.assign(n_dofs, -1);
@@ -465,27 +499,51 @@ bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, 
   });
 }
 
-template <int NS, int Dim, class Force, class Stiffness>
-void GridSystem::add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
-                                   const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent,
-                                   Force& f, Stiffness& K) {
-  // Penalty spring k (u_p - target) on the point's displacement increment u_p = N du: its force
-  // enters f_int and its stiffness k N N^T the tangent (docs/theory.md eq. 5.1).
-  const double k = target_stiffness_[p];
-  const Eigen::Matrix<double, Dim, 1> u = du.transpose() * N;
+template <int NS, int Dim, class Gradients, class Force, class Stiffness>
+void GridSystem::add_point_forces(Index p, const Eigen::Matrix<double, NS, 1>& N,
+                                  const Gradients& dN_dX, const Eigen::Matrix<double, NS, Dim>& du,
+                                  bool with_tangent, Force& f, Stiffness& K) {
+  // Forces that depend on the displacement of one place of the point's domain alone: a force
+  // F(u) whose derivative is D = dF/du enters f_int as F W_a and the tangent as W_a W_b D, W the
+  // weights of that place. The penalty spring k (u_p - target) of a prescribed motion acts at the
+  // point (W = N, docs/theory.md eq. 5.1); a point force law (contact with a rigid footing) at
+  // x_p + offset, carried by the step's deformation (W = N + grad N . offset, eq. 13.6).
   const int nodes = static_cast<int>(N.size());
-  Vec3 reaction = Vec3::Zero();
-  for (int i = 0; i < Dim; ++i) {
-    if (!(target_mask_[p] >> i & 1u)) continue;
-    const double force = k * (u(i) - target_[p](i));
-    reaction(i) = -force;
-    for (int a = 0; a < nodes; ++a) {
-      f(a * Dim + i) += force * N(a);
-      if (with_tangent)
-        for (int b = 0; b < nodes; ++b) K(a * Dim + i, b * Dim + i) += k * N(a) * N(b);
+  const auto add = [&](const Eigen::Matrix<double, NS, 1>& W, const Vec3& force,
+                       const Mat3& stiffness) {
+    for (int a = 0; a < nodes; ++a)
+      for (int i = 0; i < Dim; ++i) f(a * Dim + i) += force(i) * W(a);
+    if (!with_tangent) return;
+    for (int a = 0; a < nodes; ++a)
+      for (int b = 0; b < nodes; ++b) {
+        const double w = W(a) * W(b);
+        for (int i = 0; i < Dim; ++i)
+          for (int k = 0; k < Dim; ++k)
+            if (stiffness(i, k) != 0.0) K(a * Dim + i, b * Dim + k) += w * stiffness(i, k);
+      }
+  };
+  if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0) {
+    const double k = target_stiffness_[p];
+    const Eigen::Matrix<double, Dim, 1> u = du.transpose() * N;
+    Vec3 force = Vec3::Zero(), reaction = Vec3::Zero();
+    Mat3 stiffness = Mat3::Zero();
+    for (int i = 0; i < Dim; ++i) {
+      if (!(target_mask_[p] >> i & 1u)) continue;
+      force(i) = k * (u(i) - target_[p](i));
+      stiffness(i, i) = k;
+      reaction(i) = -force(i);
     }
+    point_reaction_[p] = reaction;
+    add(N, force, stiffness);
   }
-  point_reaction_[p] = reaction;
+  if (!force_law_acts_.empty() && force_law_acts_[p]) {
+    const Eigen::Matrix<double, NS, 1> W = N + dN_dX * force_law_offset_[p].template head<Dim>();
+    Vec3 u = Vec3::Zero(), force;
+    u.template head<Dim>() = du.transpose() * W;
+    Mat3 stiffness;
+    force_law_(p, u, force, stiffness);
+    add(W, force, stiffness);
+  }
 }
 
 template <class E>
@@ -657,8 +715,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
           admissible = false;
           continue;
         }
-        if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-          add_target_spring(p, s.N, du_local, tangent != nullptr, f_cell, K_cell);
+        if (has_point_force(p))
+          add_point_forces(p, s.N, s.dN_dX, du_local, tangent != nullptr, f_cell, K_cell);
         commit(p, *state, volume, *stress);
       }
       for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
@@ -878,9 +936,9 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         if (tangent) K_local = r.stiffness;
         commit(p, r.state, r.state_volume, r.state.cauchy_stress);
       }
-      // The spring acts on the displacements, the first ns * Dim local unknowns.
-      if (!target_stiffness_.empty() && target_stiffness_[p] > 0.0)
-        add_target_spring(p, s.N, du_local, tangent != nullptr, f_local, K_local);
+      // Springs and point force laws act on the displacements, the first ns * Dim local unknowns.
+      if (has_point_force(p))
+        add_point_forces(p, s.N, s.dN_dX, du_local, tangent != nullptr, f_local, K_local);
       dofs.resize(local);
       for (int l = 0; l < local; ++l) dofs[l] = local_dof(nodes, static_cast<int>(ns), l);
       for (int l = 0; l < local; ++l) f_int(dofs[l]) += f_local(l);

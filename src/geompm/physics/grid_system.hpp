@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -58,6 +59,12 @@ struct PointSetForce {
   Vec3 force = Vec3::Zero();
 };
 
+/// A force on material point p that depends on the point's displacement increment u_p =
+/// sum_a N_a du_a of the step (contact with a rigid footing, docs/theory.md §13): `force` as it
+/// enters f_int (minus the force on the point) and `stiffness` = d force / d u_p. Called from
+/// several threads at once, for different points.
+using PointForceLaw = std::function<void(Index p, const Vec3& u, Vec3& force, Mat3& stiffness)>;
+
 class GridSystem {
  public:
   /// Throws std::invalid_argument if GIMP is asked for on a mesh that is not a rectilinear grid.
@@ -80,6 +87,12 @@ class GridSystem {
   /// The force each point's target spring exerts on the body at the last evaluation (the
   /// reaction of a prescribed motion, summed over a point set).
   const std::vector<Vec3>& point_reactions() const { return point_reaction_; }
+  /// A force law on the points with acts[p] != 0, acting at a place of the point's domain: the
+  /// point x_p + offset[p] carried by the deformation of the step, whose displacement is
+  /// u = sum_a W_a du_a with W_a = N_a + grad N_a . offset[p] (the top of a domain that a footing
+  /// touches, docs/theory.md eq. 13.6). f_int += force W_a, tangent += W_a W_b stiffness. Call
+  /// after initialise() (which removes it), before Newton.
+  void set_point_force_law(std::vector<char> acts, std::vector<Vec3> offset, PointForceLaw law);
 
   /// Marks the constrained unknowns; builds the free numbering, the tangent's pattern and the
   /// cells' scatter maps.
@@ -137,6 +150,10 @@ class GridSystem {
   /// weights of this step (its cell's shape functions, or its wide stencil). Valid after
   /// initialise(), before the points are relocated.
   Vec3 interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const;
+  /// The same at x_p + offset, carried by the step's deformation: sum_a (N_a + grad N_a . offset)
+  /// u_a (the weights of set_point_force_law).
+  Vec3 interpolate_at(const MaterialPoints& points, Index p, const Vec3& offset,
+                      const Vector& nodal) const;
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
   bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
 
@@ -174,10 +191,15 @@ class GridSystem {
                      const Vector& acceleration, double dt, bool dynamic) const;
   template <class E>
   void empty_cell_stiffness_typed();
-  template <int NS, int Dim, class Force, class Stiffness>
-  void add_target_spring(Index p, const Eigen::Matrix<double, NS, 1>& N,
-                         const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
-                         Stiffness& K);
+  /// Whether point p carries a target spring (eq. 5.1) or a point force law (eq. 13.6).
+  bool has_point_force(Index p) const {
+    return (!target_stiffness_.empty() && target_stiffness_[p] > 0.0) ||
+           (!force_law_acts_.empty() && force_law_acts_[p]);
+  }
+  template <int NS, int Dim, class Gradients, class Force, class Stiffness>
+  void add_point_forces(Index p, const Eigen::Matrix<double, NS, 1>& N, const Gradients& dN_dX,
+                        const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
+                        Stiffness& K);
   template <class F>
   void for_each_weight(const MaterialPoints& points, Index p, F&& f) const;
   void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
@@ -234,6 +256,9 @@ class GridSystem {
   std::vector<Vec3> target_;
   std::vector<unsigned char> target_mask_;
   std::vector<Vec3> point_reaction_;
+  std::vector<char> force_law_acts_;  // per point; empty when no law is set
+  std::vector<Vec3> force_law_offset_;
+  PointForceLaw force_law_;
 
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
   std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0

@@ -1,7 +1,8 @@
 // The assembled tangent of the grid system against a finite difference of its internal force,
 // for standard MPM, DDMP and GIMP, in plane strain, axisymmetry and 3D, with points spread over
 // several cells and some held by prescribed-motion springs, in the displacement and the mixed p-u
-// formulation (docs/theory.md eqs. 3.9, 5.1, 6.1, 8.2, 9.1-9.5, 11.1-11.7). GIMP points are moved
+// formulation (docs/theory.md eqs. 3.9, 5.1, 6.1, 8.2, 9.1-9.5, 11.1-11.7), and with the penalty
+// contact of a smooth or rough rigid footing (eqs. 12.1-12.6). GIMP points are moved
 // off their seeding positions first, so that their domains straddle cell boundaries (and the axis
 // and mesh boundary, where they are clipped).
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <map>
 #include <random>
 
+#include "geompm/boundary/rigid_footing.hpp"
+#include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "run_model.hpp"
 
@@ -40,8 +43,11 @@ void scatter_points(Model& model, double fraction) {
   }
 }
 
+enum class FootingChoice { None, Smooth, Rough };
+
 void check_assembled_tangent(const std::string& example, GridInterpolation interpolation,
-                             const MaterialChoice* choice = nullptr) {
+                             const MaterialChoice* choice = nullptr,
+                             FootingChoice footing = FootingChoice::None) {
   auto spec = testing::read_example(example);
   if (choice)
     for (auto& material : spec.materials) {
@@ -67,6 +73,51 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
     mask[p] = p % 2 ? 2 : 7;
   }
   grid.set_point_targets(stiffness, target, mask);
+
+  // A rigid footing pressed into the top of the body (eqs. 12.1-12.6): its base half a domain
+  // below the top of the highest points' domains, its footprint over the middle of the body (from
+  // the axis in axisymmetry) with edges that cut through point domains, so that overlaps, their
+  // derivatives and (rough) slip from offset anchors are all exercised.
+  const int dim = model->mesh.dim(), v = dim - 1;
+  const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
+  std::vector<FootingContactPoint> contact(n_points);
+  std::vector<Vec3> offset(n_points, Vec3::Zero());
+  FootingPose pose;
+  if (footing != FootingChoice::None) {
+    Vec3 low = Vec3::Constant(1e30), high = Vec3::Constant(-1e30);
+    double top = -1e30, half_v = 0.0;
+    for (Index p = 0; p < n_points; ++p) {
+      const auto& pts = model->points;
+      contact[p].half =
+          particle_half_lengths(pts.initial_half_size[p], pts.deformation_gradient[p], dim);
+      offset[p](v) = contact[p].half(v);  // the law acts at the top of the point's domain
+      offset[p](0) = 0.3 * contact[p].half(0);
+      contact[p].position = pts.position[p] + offset[p];
+      contact[p].half(v) = 0.0;
+      contact[p].kappa = 10 * model->largest_modulus() / offset[p](v);
+      contact[p].rough = footing == FootingChoice::Rough;
+      contact[p].anchor = pts.position[p] + Vec3(2e-3, -1e-3, 1.5e-3) * (p % 3 - 1.0);
+      low = low.cwiseMin(pts.position[p] - contact[p].half);
+      high = high.cwiseMax(pts.position[p] + contact[p].half);
+      if (contact[p].position(v) > top) {
+        top = contact[p].position(v);
+        half_v = offset[p](v);
+      }
+    }
+    pose.base = top - 0.5 * half_v;
+    for (int t = 0; t < v; ++t) {
+      const double w = high(t) - low(t);
+      pose.low(t) = axisymmetric ? 0.0 : low(t) + 0.31 * w;
+      pose.high(t) = low(t) + 0.57 * w;
+    }
+    pose.displacement = Vec3(1e-3, 2e-3, -1e-3);
+    grid.set_point_force_law(
+        std::vector<char>(n_points, 1), offset, [&](Index p, const Vec3& u, Vec3& f, Mat3& K) {
+          const auto c = footing_contact(pose, contact[p], u, dim, axisymmetric);
+          f = c.force;
+          K = c.stiffness;
+        });
+  }
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
 
   std::mt19937 rng(7);
@@ -124,6 +175,31 @@ TEST(GridSystemTangent, MixedMohrCoulombGimp) {
 TEST(GridSystemTangent, MixedMohrCoulomb3D) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
                           &mixed_mohr_coulomb);
+}
+
+TEST(GridSystemTangent, RigidFootingSmoothPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, nullptr,
+                          FootingChoice::Smooth);
+}
+TEST(GridSystemTangent, RigidFootingRoughMixedPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &mixed_tresca,
+                          FootingChoice::Rough);
+}
+TEST(GridSystemTangent, RigidFootingRoughGimpPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp, nullptr,
+                          FootingChoice::Rough);
+}
+TEST(GridSystemTangent, RigidFootingSmoothAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
+                          &mixed_tresca, FootingChoice::Smooth);
+}
+TEST(GridSystemTangent, RigidFootingRoughAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard, nullptr,
+                          FootingChoice::Rough);
+}
+TEST(GridSystemTangent, RigidFootingRoughThreeD) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard, nullptr,
+                          FootingChoice::Rough);
 }
 
 TEST(GridSystemTangent, StandardPlaneStrain) {

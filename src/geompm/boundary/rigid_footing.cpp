@@ -1,0 +1,144 @@
+#include "geompm/boundary/rigid_footing.hpp"
+
+#include <algorithm>
+
+#include "geompm/boundary/grid_motions.hpp"
+
+namespace geompm {
+
+FootingContactForce footing_contact(const FootingPose& pose, const FootingContactPoint& point,
+                                    const Vec3& u, int dim, bool axisymmetric) {
+  FootingContactForce c;
+  const int v = dim - 1;  // the vertical axis
+  const Vec3 x = point.position + u;
+  // Penetration of the point's domain through the base (eq. 13.1).
+  const double g = x(v) + point.half(v) - pose.base;
+  if (!(g > 0.0) && !point.bilateral) return c;
+  // Contact area: the part of the domain under the footprint (eq. 13.2), and its derivative
+  // with respect to the point's horizontal position. Along each horizontal axis the overlap of
+  // (x - l, x + l) with (low, high) is min(x + l, high) - max(x - l, low): its ends move with x
+  // while they lie inside the footprint.
+  double area = 1.0;
+  Vec3 d_area = Vec3::Zero();
+  if (axisymmetric) {
+    const double lo = std::max(x(0) - point.half(0), pose.low(0));
+    const double hi = std::min(x(0) + point.half(0), pose.high(0));
+    if (!(hi > lo)) return c;
+    area = 0.5 * (hi * hi - lo * lo);  // per radian: the integral of r dr
+    d_area(0) = (x(0) + point.half(0) < pose.high(0) ? hi : 0.0) -
+                (x(0) - point.half(0) > pose.low(0) ? lo : 0.0);
+  } else {
+    Vec3 overlap = Vec3::Ones(), d_overlap = Vec3::Zero();
+    for (int t = 0; t < v; ++t) {
+      const double lo = std::max(x(t) - point.half(t), pose.low(t));
+      const double hi = std::min(x(t) + point.half(t), pose.high(t));
+      if (!(hi > lo)) return c;
+      overlap(t) = hi - lo;
+      d_overlap(t) = (x(t) + point.half(t) < pose.high(t) ? 1.0 : 0.0) -
+                     (x(t) - point.half(t) > pose.low(t) ? 1.0 : 0.0);
+    }
+    for (int t = 0; t < v; ++t) area *= overlap(t);
+    for (int t = 0; t < v; ++t) d_area(t) = d_overlap(t) * area / overlap(t);
+  }
+  c.touching = true;
+  c.penetration = g;
+  const double k = point.kappa;
+  // The footing's side (eq. 13.5): a domain that reaches through the base by more than it
+  // reaches past the nearest edge (soil heaved beside the footing, drifting over its edge) is
+  // pushed out sideways through the side, by as much as it overlaps, instead of down by g. The
+  // force has the same size at the switch (kappa g o either way in 2D), and goes to zero with
+  // the overlap.
+  int side = -1;
+  double through = g, sign = 0.0;
+  for (int t = 0; t < v; ++t) {
+    const double past_high = pose.high(t) - (x(t) - point.half(t));
+    const double past_low = x(t) + point.half(t) - pose.low(t);
+    // The axis is no side: a disc has none at r = 0.
+    const bool low_is_side = !(axisymmetric && pose.low(t) <= 0.0);
+    if (past_high < through) {
+      side = t, through = past_high, sign = 1.0;
+    }
+    if (low_is_side && past_low < through) {
+      side = t, through = past_low, sign = -1.0;
+    }
+  }
+  if (side >= 0) {
+    // f = -sign kappa s g P on the side's normal axis: s the overlap past the edge (ds/dx =
+    // -sign), g the height of the domain through the base, P the side's extent along the other
+    // horizontal axis (1 in plane strain; the edge's radius per radian in axisymmetry).
+    const double edge = sign > 0 ? pose.high(side) : pose.low(side);
+    double P = 1.0;
+    Vec3 dP = Vec3::Zero();
+    if (axisymmetric) {
+      P = edge;
+    } else {
+      for (int t = 0; t < v; ++t)
+        if (t != side) {
+          const double lo = std::max(x(t) - point.half(t), pose.low(t));
+          const double hi = std::min(x(t) + point.half(t), pose.high(t));
+          P = hi - lo;
+          dP(t) = (x(t) + point.half(t) < pose.high(t) ? 1.0 : 0.0) -
+                  (x(t) - point.half(t) > pose.low(t) ? 1.0 : 0.0);
+        }
+    }
+    c.area = g * P;
+    c.force(side) = -sign * k * through * g * P;
+    c.stiffness(side, side) = k * g * P;
+    c.stiffness(side, v) = -sign * k * through * P;
+    for (int t = 0; t < v; ++t)
+      if (t != side) c.stiffness(side, t) = -sign * k * through * g * dP(t);
+    return c;
+  }
+  c.on_base = true;
+  c.area = area;
+  // Normal force kappa g A, pushing the point down (eq. 13.3), and its derivative (eq. 13.6).
+  c.force(v) = k * g * area;
+  c.stiffness(v, v) = k * area;
+  for (int t = 0; t < v; ++t) c.stiffness(v, t) = k * g * d_area(t);
+  if (point.rough) {
+    // Stick: the horizontal position relative to the footing held at the anchor (eq. 13.4).
+    for (int t = 0; t < v; ++t) {
+      const double slip = x(t) - pose.displacement(t) - point.anchor(t);
+      c.force(t) = k * area * slip;
+      c.stiffness(t, t) += k * area;
+      for (int s = 0; s < v; ++s) c.stiffness(t, s) += k * slip * d_area(s);
+    }
+  }
+  return c;
+}
+
+RigidFooting::RigidFooting(const spec::RigidFooting& spec, int dim) : spec_(spec), dim_(dim) {
+  for (int d = 0; d < dim; ++d) components_[d] = Expression(spec.components[d]);
+}
+
+Vec3 RigidFooting::displacement(double t0, double t1) const {
+  Vec3 d = done_ + prescribed_increment(components_, spec_.velocity, t0, t1);
+  for (int i = dim_; i < 3; ++i) d(i) = 0.0;
+  return d;
+}
+
+FootingPose RigidFooting::pose(const Vec3& displacement) const {
+  FootingPose pose;
+  const int v = dim_ - 1;
+  pose.displacement = displacement;
+  pose.base = spec_.base + displacement(v);
+  pose.low(0) = spec_.x[0] + displacement(0);
+  pose.high(0) = spec_.x[1] + displacement(0);
+  if (dim_ == 3) {
+    pose.low(1) = spec_.y[0] + displacement(1);
+    pose.high(1) = spec_.y[1] + displacement(1);
+  }
+  return pose;
+}
+
+std::optional<Vec3> RigidFooting::anchor(Index id) const {
+  if (auto it = anchors_.find(id); it != anchors_.end()) return it->second;
+  return std::nullopt;
+}
+
+void RigidFooting::commit(const Vec3& displacement, std::unordered_map<Index, Vec3> touching) {
+  done_ = displacement;
+  anchors_ = std::move(touching);
+}
+
+}  // namespace geompm

@@ -1,0 +1,180 @@
+// The rigid footing's penalty contact (docs/theory.md §13): the force on one point against
+// eqs. 13.1-13.4, the loaded width and area that the edge-overlap weighting makes exact, and the
+// reaction of a confined elastic block pressed by a smooth footing against its closed form, in
+// plane strain and axisymmetry.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geompm/boundary/rigid_footing.hpp"
+#include "run_model.hpp"
+
+namespace geompm {
+namespace {
+
+FootingPose strip_pose(double low, double high, double base) {
+  FootingPose pose;
+  pose.base = base;
+  pose.low(0) = low;
+  pose.high(0) = high;
+  return pose;
+}
+
+TEST(RigidFootingContact, NormalForceIsKappaTimesPenetrationTimesArea) {
+  const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
+  FootingContactPoint point;
+  point.position = Vec3(0.2, 0.95, 0.0);
+  point.half = Vec3(0.05, 0.1, 0.0);
+  point.kappa = 1e5;
+  const Vec3 u(0.01, -0.001, 0.0);  // the domain's top at 0.95 + 0.1 - 0.001: g = 0.049
+  auto c = footing_contact(pose, point, u, 2, false);
+  ASSERT_TRUE(c.touching);
+  EXPECT_NEAR(c.penetration, 0.049, 1e-14);
+  EXPECT_NEAR(c.area, 0.1, 1e-14);  // the whole domain under the footprint
+  EXPECT_NEAR(c.force.y(), 1e5 * 0.049 * 0.1, 1e-9);
+  EXPECT_EQ(c.force.x(), 0.0);  // smooth: normal force only
+  // Below the base: no force.
+  EXPECT_FALSE(footing_contact(pose, point, Vec3(0, -0.2, 0), 2, false).touching);
+  // Outside the footprint: no force.
+  EXPECT_FALSE(footing_contact(pose, point, Vec3(0.4, 0, 0), 2, false).touching);
+
+  // Rough: the horizontal slip from the anchor, relative to the footing, is held by kappa A.
+  point.rough = true;
+  point.anchor = Vec3(0.2, 0.0, 0.0);
+  FootingPose moved = pose;
+  moved.displacement = Vec3(0.004, -0.01, 0.0);
+  c = footing_contact(moved, point, u, 2, false);
+  EXPECT_NEAR(c.force.x(), 1e5 * 0.1 * (0.21 - 0.004 - 0.2), 1e-9);
+}
+
+TEST(RigidFootingContact, SoilHeavedBesideTheFootingIsPushedOutThroughItsSide) {
+  // A domain 0.01 above the base that reaches 0.002 over the edge x = 0.5: it is pushed out
+  // sideways by kappa s g (eq. 13.5), not down by kappa g o.
+  const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
+  FootingContactPoint point;
+  point.position = Vec3(0.523, 1.01, 0.0);
+  point.half = Vec3(0.025, 0.0, 0.0);
+  point.kappa = 1e5;
+  const auto c = footing_contact(pose, point, Vec3::Zero(), 2, false);
+  ASSERT_TRUE(c.touching);
+  EXPECT_FALSE(c.on_base);
+  EXPECT_NEAR(c.force.x(), -1e5 * 0.002 * 0.01, 1e-9);  // f_int sign: the point is pushed to +x
+  EXPECT_EQ(c.force.y(), 0.0);
+  // Just under the base instead, the same domain is pressed down by the base on its overlap.
+  point.position.y() = 1.001;
+  const auto d = footing_contact(pose, point, Vec3::Zero(), 2, false);
+  EXPECT_TRUE(d.on_base);
+  EXPECT_NEAR(d.force.y(), 1e5 * 0.001 * 0.002, 1e-9);
+}
+
+TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
+  // A row of points whose domains tile [0, 1] (20 of them), pressed uniformly: the contact areas
+  // add up to the footprint's width, wherever its edge cuts a domain.
+  for (double edge : {0.45, 0.4321, 0.5, 0.0123}) {
+    const FootingPose pose = strip_pose(0.0, edge, 1.0);
+    double width = 0.0, force = 0.0;
+    for (int k = 0; k < 20; ++k) {
+      FootingContactPoint point;
+      point.position = Vec3(0.025 + 0.05 * k, 0.975, 0.0);
+      point.half = Vec3(0.025, 0.025, 0.0);
+      point.kappa = 2.0;
+      const auto c = footing_contact(pose, point, Vec3(0, 0.001, 0), 2, false);
+      width += c.area;
+      force += c.force.y();
+    }
+    EXPECT_NEAR(width, edge, 1e-12);
+    EXPECT_NEAR(force, 2.0 * 0.001 * edge, 1e-12);  // q = kappa g on exactly the footprint
+  }
+  // Axisymmetry: per radian, the areas add up to R^2 / 2.
+  for (double radius : {0.45, 0.4321}) {
+    const FootingPose pose = strip_pose(0.0, radius, 1.0);
+    double area = 0.0;
+    for (int k = 0; k < 20; ++k) {
+      FootingContactPoint point;
+      point.position = Vec3(0.025 + 0.05 * k, 0.975, 0.0);
+      point.half = Vec3(0.025, 0.025, 0.0);
+      point.kappa = 1.0;
+      area += footing_contact(pose, point, Vec3(0, 0.001, 0), 2, true).area;
+    }
+    EXPECT_NEAR(area, 0.5 * radius * radius, 1e-12);
+  }
+  // 3D: a plate over a corner of a tiled square; the areas add up to the plate's.
+  FootingPose plate;
+  plate.base = 1.0;
+  plate.low = Vec3(0.13, -0.2, 0);
+  plate.high = Vec3(0.61, 0.377, 0);
+  double area = 0.0;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      FootingContactPoint point;
+      point.position = Vec3(0.05 + 0.1 * i, 0.05 + 0.1 * j, 0.95);
+      point.half = Vec3(0.05, 0.05, 0.05);
+      point.kappa = 1.0;
+      area += footing_contact(plate, point, Vec3(0, 0, 0.001), 3, false).area;
+    }
+  EXPECT_NEAR(area, (0.61 - 0.13) * 0.377, 1e-12);
+}
+
+// A block [0, 1] x [0, 1] (E = 10 MPa, nu = 0.3) with rollers on both sides and its base fixed,
+// pressed by a smooth footing wider than it: confined (1D) compression. The contact acts at the
+// top of the top row of points' domains, which is the surface, so the grid sees the footing's
+// load at its top nodes and the block is uniformly compressed, in series with the penalty's
+// kappa W (W the width, or R^2 / 2 per radian in axisymmetry):
+//   F = W d / (H / E_oed + 1 / kappa).
+std::string confined_block(const std::string& kinematics, int cells, double kappa) {
+  return fmt::format(R"m(analysis: {{kinematics: {}}}
+mesh: {{generate: {{x: {{length: 1, cells: {}}}, y: {{length: {}, cells: {}}}}}}}
+materials:
+  soil: {{model: linear_elastic, E: 10000, nu: 0.3}}
+bodies:
+  block: {{material: soil, region: {{box: {{min: [0, 0], max: [1, 1]}}}}}}
+phases:
+  - name: press
+    time_step: 1
+    newton: {{residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-9}}
+    rigid_footings:
+      - {{name: plate, base: 1, x: [0, 1.5], contact: smooth, displacement: [0, "-1e-4*t"],
+         penalty: {}}}
+    fixities:
+      - {{boundary: left, fix: normal}}
+      - {{boundary: right, fix: normal}}
+      - {{boundary: bottom, fix: all}}
+output:
+  vtk: {{every: 0}}
+  history:
+    - {{quantity: displacement, footing: plate, component: y, name: settlement}}
+    - {{quantity: reaction, footing: plate, component: y, name: force}}
+    - {{quantity: reaction, boundary: bottom, component: y, name: base}}
+)m",
+                     kinematics, cells, 1.0 + 1.0 / cells, cells + 1, kappa);
+}
+
+void check_confined_block(const std::string& kinematics, int cells) {
+  const double E = 1e4, nu = 0.3, d = 1e-4, kappa = 1e2 * E * cells;
+  const double E_oed = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  // Width W per unit thickness, or the area R^2 / 2 per radian.
+  const double W = kinematics == "axisymmetric" ? 0.5 : 1.0;
+  const double expected = W * d / (1.0 / E_oed + 1.0 / kappa);
+  const auto run = testing::run_spec(
+      read_model_from_string(confined_block(kinematics, cells, kappa), "block.yaml"),
+      "rigid_footing_block_" + kinematics);
+  const double force = -run.column("force").back();  // the footing pushes down
+  EXPECT_NEAR(run.column("settlement").back(), -d, 1e-15);
+  // Small strain (d / H = 1e-4): the Hencky law is linear to 1e-4.
+  EXPECT_NEAR(force / expected, 1.0, 5e-4) << kinematics << ", " << cells << " cells";
+  // The footing's force reaches the fixed base.
+  EXPECT_NEAR(run.column("base").back() / force, 1.0, 1e-6);
+}
+
+TEST(RigidFootingBlock, ConfinedBlockReactionIsTheClosedFormPlaneStrain) {
+  check_confined_block("plane_strain", 4);
+  check_confined_block("plane_strain", 8);
+}
+
+TEST(RigidFootingBlock, ConfinedBlockReactionIsTheClosedFormAxisymmetric) {
+  check_confined_block("axisymmetric", 4);
+}
+
+}  // namespace
+}  // namespace geompm
