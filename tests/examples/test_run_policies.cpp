@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "example_text.hpp"
 
 namespace {
 
@@ -95,21 +96,6 @@ output:
 )" + numerics;
 }
 
-std::string example_text(const std::string& relative) {
-  const std::string text = read_text(fs::path(GEOMPM_SOURCE_DIR) / "examples" / relative);
-  EXPECT_FALSE(text.empty()) << relative;
-  return text;
-}
-
-/// `text` with its one occurrence of `from` replaced by `to` (a test failure if not exactly one).
-std::string replace_once(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "'" << from << "' not in the model";
-  if (at == std::string::npos) return text;
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "'" << from << "' twice in the model";
-  return text.replace(at, from.size(), to);
-}
-
 class RunPolicies : public GeompmRunTest<> {};
 
 // (a) A point leaves the mesh under the default policy (stop): exit 3, the message names the
@@ -173,7 +159,7 @@ TEST_F(RunPolicies, LostPointsRemoved) {
 TEST_F(RunPolicies, AllPointsRemoved) {
   // Only the flyer: it leaves the mesh at t = 0.25 and the phase goes on to t = 0.5.
   std::string model = flying_block_model("numerics: {lost_points: remove}\n");
-  model = replace_once(
+  model = geompm::testing::replace_once(
       model, "  rest:\n    material: rock\n    region: {box: {min: [0, 0], max: [1, 1]}}\n", "");
   write("model.yaml", model);
   const auto r = geompm({"run", "-t", "1", "-o", "out", "model.yaml"});
@@ -190,9 +176,9 @@ TEST_F(RunPolicies, AllPointsRemoved) {
 // dynamic problem there is: every step should converge at once.
 TEST_F(RunPolicies, UniformMotionWithoutLoads) {
   std::string model = flying_block_model("");
-  model = replace_once(model, "    gravity: {acceleration: [0, -10]}\n", "");
-  model = replace_once(model, "duration: 0.5", "duration: 0.1");
-  model = replace_once(
+  model = geompm::testing::replace_once(model, "    gravity: {acceleration: [0, -10]}\n", "");
+  model = geompm::testing::replace_once(model, "duration: 0.5", "duration: 0.1");
+  model = geompm::testing::replace_once(
       model, "  rest:\n    material: rock\n    region: {box: {min: [0, 0], max: [1, 1]}}\n", "");
   write("model.yaml", model);
   const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", "model.yaml"});
@@ -205,9 +191,9 @@ TEST_F(RunPolicies, UniformMotionWithoutLoads) {
 // (c) A very soft column under gravity asked to take its whole load in one step: Newton fails,
 // the step is cut back until it converges, and the run still reaches the right settlement.
 TEST_F(RunPolicies, AdaptiveTimeSteppingCutsBack) {
-  std::string model = example_text("column/column_large_deformation.yaml");
-  model = replace_once(model, "time_step: {initial: 0.05, min: 0.001, max: 0.05}",
-                       "time_step: {initial: 1.0, min: 0.001, max: 1.0}");
+  std::string model = geompm::testing::example_text("column/column_large_deformation.yaml");
+  model = geompm::testing::replace_once(model, "time_step: {initial: 0.05, min: 0.001, max: 0.05}",
+                                        "time_step: {initial: 1.0, min: 0.001, max: 1.0}");
   write("column.yaml", model);
   const auto r = geompm({"run", "-t", "1", "-o", "out", "column.yaml"});
   ASSERT_TRUE(r.exited && r.exit_code == 0) << describe(r);
@@ -244,7 +230,8 @@ TEST_F(RunPolicies, NoConvergenceAtTheSmallestTimeStep) {
 output:
 )";
   write("oedometer.yaml",
-        replace_once(example_text("oedometer/oedometer.yaml"), "output:\n", stubborn));
+        geompm::testing::replace_once(geompm::testing::example_text("oedometer/oedometer.yaml"),
+                                      "output:\n", stubborn));
   const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", "oedometer.yaml"});
   ASSERT_TRUE(r.exited && r.exit_code == 3) << describe(r);
   EXPECT_TRUE(Contains(r.err, "run stopped: phase 'stubborn'"));

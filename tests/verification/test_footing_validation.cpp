@@ -28,6 +28,7 @@
 #include <sstream>
 #include <string>
 
+#include "example_text.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
@@ -36,25 +37,9 @@ namespace {
 constexpr double kPrandtl =
     2.0 + std::numbers::pi;  // q_u / s_u of a rigid strip on Tresca soil (Prandtl 1921)
 
-std::string read_example_text(const std::string& relative) {
-  std::ifstream in(std::string(GEOMPM_SOURCE_DIR) + "/examples/" + relative);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Replaces the one occurrence of `from` (the test fails loudly if the example changed).
-std::string replace_once(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "the example no longer holds: " << from;
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "more than once: " << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 // The examples' mesh (10 cells under the footing's half-width, h = B/20), without VTK files.
 std::string no_vtk(const std::string& text) {
-  return replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}");
+  return testing::replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}");
 }
 
 struct Footing {
@@ -109,13 +94,13 @@ const std::string kClay = "nu: 0.49, density: 0, formulation: mixed";
 enum class Strip { SteelBlock, RigidSmooth, RigidRough };
 
 std::string strip(Strip kind, double nu, const char* formulation) {
-  const auto text = read_example_text(kind == Strip::SteelBlock ? "strip_footing/strip_footing.yaml"
-                                      : kind == Strip::RigidSmooth
-                                          ? "strip_footing/strip_footing_smooth.yaml"
-                                          : "strip_footing/strip_footing_rigid_rough.yaml");
+  const auto text = testing::example_text(
+      kind == Strip::SteelBlock    ? "strip_footing/strip_footing.yaml"
+      : kind == Strip::RigidSmooth ? "strip_footing/strip_footing_smooth.yaml"
+                                   : "strip_footing/strip_footing_rigid_rough.yaml");
   char clay[100];
   std::snprintf(clay, sizeof clay, "nu: %g, density: 0, formulation: %s", nu, formulation);
-  return no_vtk(replace_once(text, kClay, clay));
+  return no_vtk(testing::replace_once(text, kClay, clay));
 }
 
 // q / s_u = 2 x force / (B s_u): half of a strip of width B = 1, s_u = 1 (the reaction is upward
@@ -203,7 +188,7 @@ TEST(MohrCoulombFootingValidation, SmoothFootingAgainstPrandtlReissnerNc) {
                     std::pow(std::tan(std::numbers::pi / 4 + phi / 2), 2);
   const double Nc = (Nq - 1.0) / std::tan(phi);
   EXPECT_NEAR(Nc, 14.835, 0.001);
-  const auto text = no_vtk(read_example_text("mohr_coulomb_footing/mohr_coulomb_footing.yaml"));
+  const auto text = no_vtk(testing::example_text("mohr_coulomb_footing/mohr_coulomb_footing.yaml"));
   const auto& f = run_footing(text, "mohr_coulomb", kStripScale);
   const double q = f.q_at(0.05);
   std::printf("[Mohr-Coulomb strip, phi 20, h = B/20, 0.05 B] q/c = %.3f, N_c = %.3f (%+.1f %%)\n",

@@ -21,6 +21,7 @@
 #include <sstream>
 #include <string>
 
+#include "example_text.hpp"
 #include "geompm/core/error.hpp"
 #include "run_model.hpp"
 
@@ -37,48 +38,36 @@ const double kNc = (kNq - 1.0) / std::tan(kPhi);                            // 3
 constexpr double kNgammaRough = 14.75;
 constexpr double kNgammaSmooth = 7.65;
 
-std::string example_text(const std::string& relative) {
-  std::ifstream in(std::string(GEOMPM_SOURCE_DIR) + "/examples/frictional_footing/" + relative);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string replace_once(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "the example no longer holds: " << from;
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "more than once: " << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 // The examples' model without VTK files, on the strip mesh with n cells under the half-width
 // (the examples have n = 10, h = B/20), as scripts/validation_report.py refines it.
 std::string model(const std::string& file, int n) {
-  auto text = replace_once(example_text(file), "vtk: {every: 10}", "vtk: {every: 0}");
+  auto text = testing::replace_once(testing::example_text("frictional_footing/" + file),
+                                    "vtk: {every: 10}", "vtk: {every: 0}");
   // The examples push only as far as their runs finish; pushed 0.03 B as in the report, the runs
   // stop on the way and the history up to there is used.
   for (const char* push : {"\"-0.01*t\"", "\"-0.007*t\"", "\"-0.004*t\""})
-    if (text.find(push) != std::string::npos) text = replace_once(text, push, "\"-0.03*t\"");
+    if (text.find(push) != std::string::npos)
+      text = testing::replace_once(text, push, "\"-0.03*t\"");
   if (n == 10) return text;
   char buf[200];
   std::snprintf(buf, sizeof buf,
                 "x: [{length: 1.0, cells: %d}, {length: 4.0, cells: %d, ratio: 4}]", 2 * n,
                 6 * n / 5);
-  text =
-      replace_once(text, "x: [{length: 1.0, cells: 20}, {length: 4.0, cells: 12, ratio: 4}]", buf);
+  text = testing::replace_once(
+      text, "x: [{length: 1.0, cells: 20}, {length: 4.0, cells: 12, ratio: 4}]", buf);
   std::snprintf(buf, sizeof buf,
                 "y: [{length: 4.0, cells: %d, ratio: 0.25}, {length: 1.0, cells: %d}, "
                 "{length: 0.2, cells: %d}]",
                 6 * n / 5, 2 * n, std::max(2, 2 * n / 5));
-  text = replace_once(text,
-                      "y: [{length: 4.0, cells: 12, ratio: 0.25}, {length: 1.0, cells: 20}, "
-                      "{length: 0.2, cells: 4}]",
-                      buf);
+  text =
+      testing::replace_once(text,
+                            "y: [{length: 4.0, cells: 12, ratio: 0.25}, {length: 1.0, cells: 20}, "
+                            "{length: 0.2, cells: 4}]",
+                            buf);
   std::snprintf(buf, sizeof buf, "%g]", 5 - 0.25 / n);  // the top row of soil points
   for (const char* x : {"min: [0, ", "min: [0.5, "})
     if (text.find(std::string(x) + "4.975]") != std::string::npos)
-      text = replace_once(text, std::string(x) + "4.975]", x + std::string(buf));
+      text = testing::replace_once(text, std::string(x) + "4.975]", x + std::string(buf));
   return text;
 }
 
