@@ -873,17 +873,23 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
   // Point p's weights over `over` (sorted active nodes holding its own stencil).
-  const auto stencil_over = [&](Index p, const std::vector<Index>& over) {
+  // Point p's weights over `over` (sorted active nodes holding its own stencil), into `out`.
+  const auto fill_stencil = [&](Index p, const std::vector<Index>& over, Dynamic& out) {
     const Index begin = wide_start_[p], end = wide_start_[p + 1];
-    Dynamic padded;
-    padded.N.setZero(static_cast<Index>(over.size()));
-    padded.dN_dX.setZero(static_cast<Index>(over.size()), Dim);
+    const Index size = static_cast<Index>(over.size());
+    if (size == end - begin) {  // its own stencil: a copy
+      out.N = Eigen::Map<const Eigen::VectorXd>(wide_N_.data() + begin, size);
+      out.dN_dX = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>>(
+          wide_gradients_.data() + std::size_t(begin) * Dim, size, Dim);
+      return;
+    }
+    out.N.setZero(size);
+    out.dN_dX.setZero(size, Dim);
     for (Index a = begin; a < end; ++a) {
       const Index at = std::lower_bound(over.begin(), over.end(), wide_nodes_[a]) - over.begin();
-      padded.N(at) = wide_N_[a];
-      for (int i = 0; i < Dim; ++i) padded.dN_dX(at, i) = wide_gradients_[std::size_t(a) * Dim + i];
+      out.N(at) = wide_N_[a];
+      for (int i = 0; i < Dim; ++i) out.dN_dX(at, i) = wide_gradients_[std::size_t(a) * Dim + i];
     }
-    return padded;
   };
   const auto gather = [&](const std::vector<Index>& over) {
     du_local.resize(static_cast<Index>(over.size()), Dim);
@@ -897,7 +903,13 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
                         union_nodes_.begin() + union_start_[ci + 1]);
       gather(cell_nodes);
       if (!average_volume_change(
-              points, ci, du_local, [&](Index q) { return stencil_over(q, cell_nodes); }, average))
+              points, ci, du_local,
+              [&](Index q) {
+                Dynamic padded;
+                fill_stencil(q, cell_nodes, padded);
+                return padded;
+              },
+              average))
         return false;
     }
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
@@ -908,7 +920,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         nodes.assign(wide_nodes_.begin() + wide_start_[p],
                      wide_nodes_.begin() + wide_start_[p + 1]);
       }
-      s = stencil_over(p, nodes);
+      fill_stencil(p, nodes, s);
       gather(nodes);
       const Index ns = static_cast<Index>(nodes.size());
       const PointStartState start = start_state(points, p);

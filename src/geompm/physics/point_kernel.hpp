@@ -139,16 +139,16 @@ Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> divergence_operator(
   Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> div =
       Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n>::Zero(1, B.cols());
   for (int c = 0; c < GC::count; ++c)
-    if (GC::row[c] == GC::col[c] && (!in_plane || GC::row[c] < Dim)) div += B.row(c);
+    if (in_plane ? scaled_by_volume_average<Dim>(c) : GC::row[c] == GC::col[c]) div += B.row(c);
   return div;
 }
 
 /// The kinematics and stress update of one point: from the stencil's nodal displacement
 /// increments du (row a = node a) to the point's trial state, current volume and gradient
-/// operator B. With a cell's volume average, the material sees dF^ = (dJ^ / det dF)^(1/k) dF
-/// on the scaled components (F-bar, theory eq. 12.2) while B and the volume of the forces are
-/// those of dF itself. Returns false if the point's deformation is inadmissible (det dF <= 0):
-/// Newton then cuts the step back. Shared by the displacement and the mixed kernels.
+/// operator B. With a cell's volume average, the material sees dF^ = (dJ^ / j)^(1/dim) dF on the
+/// grid's directions, j their volume ratio (F-bar, theory eq. 12.2), while B and the volume of the
+/// forces are those of dF itself. Returns false if the point's deformation is inadmissible (det dF
+/// <= 0): Newton then cuts the step back. Shared by the displacement and the mixed kernels.
 template <int NS, int Dim>
 bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
                   const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
