@@ -12,6 +12,10 @@
 //   step             StepSolver::advance, the whole step, from the same state every time; also
 //                    the memory per point: heap held by each stage, peak resident set of a step
 //
+// internal_force (1 thread), factorize_solve and step also run with the soil in the mixed p-u
+// formulation, with per-point and cell-averaged volume change (".../formulation:<name>"), at
+// the sizes below 300 cells per side.
+//
 // Benchmarks are registered size by size, so one model is in memory at a time. Every timing is
 // wall-clock (the loops are OpenMP-parallel) and repeated; the doc reports the medians. The CPU
 // time is the whole process's (all threads): on a machine shared with other work it is the
@@ -88,8 +92,8 @@ void constraints(benchmark::State& state, int cells) {
   state.counters["nnz"] = double(c.grid().pattern().nonZeros());
 }
 
-void internal_force(benchmark::State& state, int cells, int n_threads) {
-  StepCase& c = step_case(cells);
+void internal_force(benchmark::State& state, int cells, int n_threads, Formulation formulation) {
+  StepCase& c = step_case(cells, formulation);
   Threads threads(n_threads);
   c.evaluate();
   for (auto _ : state) c.evaluate();
@@ -110,8 +114,8 @@ void analyze(benchmark::State& state, int cells) {
   state.counters["nnz"] = double(c.tangent().nonZeros());
 }
 
-void factorize_solve(benchmark::State& state, int cells) {
-  StepCase& c = step_case(cells);
+void factorize_solve(benchmark::State& state, int cells, Formulation formulation) {
+  StepCase& c = step_case(cells, formulation);
   Threads threads(all_cores());
   c.analyse();
   for (auto _ : state) c.factorize_and_solve();
@@ -133,8 +137,8 @@ void convect(benchmark::State& state, int cells) {
   count_points(state, c, all_cores());
 }
 
-void step(benchmark::State& state, int cells) {
-  StepCase& c = step_case(cells);
+void step(benchmark::State& state, int cells, Formulation formulation) {
+  StepCase& c = step_case(cells, formulation);
   Threads threads(all_cores());
   // Memory: the heap each stage holds (measured when the stages were first built), then the
   // peak resident set of whole steps on their own, with the stage-by-stage state dropped.
@@ -187,14 +191,32 @@ void register_all() {
     for (int t : {1, all_cores()}) {
       timed(benchmark::RegisterBenchmark(
           ("internal_force" + size + "/threads:" + std::to_string(t)).c_str(), internal_force,
-          cells, t));
+          cells, t, Formulation::Displacement));
       if (all_cores() == 1) break;
     }
     timed(benchmark::RegisterBenchmark(("analyze" + size).c_str(), analyze, cells));
-    timed(benchmark::RegisterBenchmark(("factorize_solve" + size).c_str(), factorize_solve, cells),
+    timed(benchmark::RegisterBenchmark(("factorize_solve" + size).c_str(), factorize_solve, cells,
+                                       Formulation::Displacement),
           heavy);
     timed(benchmark::RegisterBenchmark(("convect" + size).c_str(), convect, cells));
-    timed(benchmark::RegisterBenchmark(("step" + size).c_str(), step, cells), heavy);
+    timed(benchmark::RegisterBenchmark(("step" + size).c_str(), step, cells,
+                                       Formulation::Displacement),
+          heavy);
+  }
+  // The mixed p-u formulation against the displacement one, at the sizes below 10^6 points: one
+  // more unknown per node, the pressure blocks of the kernel and, with the cell's average volume
+  // change (F-bar), every mixed point's dF and B computed twice (once for the average).
+  for (int cells : sizes_from_environment()) {
+    if (cells >= 300) continue;
+    const std::string size = "/cells:" + std::to_string(cells);
+    for (Formulation f : {Formulation::MixedPerPoint, Formulation::MixedCellAverage}) {
+      const std::string tag = std::string("/formulation:") + formulation_name(f);
+      timed(benchmark::RegisterBenchmark(("internal_force" + size + "/threads:1" + tag).c_str(),
+                                         internal_force, cells, 1, f));
+      timed(benchmark::RegisterBenchmark(("factorize_solve" + size + tag).c_str(), factorize_solve,
+                                         cells, f));
+      timed(benchmark::RegisterBenchmark(("step" + size + tag).c_str(), step, cells, f));
+    }
   }
 }
 

@@ -95,14 +95,17 @@ def finish_facts(facts):
 
 
 def parse_name(run_name):
+    """(phase, cells, threads, formulation): formulation None for the displacement one."""
     parts = run_name.split("/")
-    cells = threads = None
+    cells = threads = formulation = None
     for p in parts[1:]:
         if p.startswith("cells:"):
             cells = int(p.split(":")[1])
         elif p.startswith("threads:"):
             threads = int(p.split(":")[1])
-    return parts[0], cells, threads
+        elif p.startswith("formulation:"):
+            formulation = p.split(":")[1]
+    return parts[0], cells, threads, formulation
 
 
 def to_ms(value, unit):
@@ -115,10 +118,12 @@ def load_results(path):
     cores = int(data["context"].get("omp_max_threads", data["context"].get("num_cpus", 1)))
     medians, cvs = {}, {}
     for b in data["benchmarks"]:
-        phase, cells, threads = parse_name(b["run_name"])
+        phase, cells, threads, formulation = parse_name(b["run_name"])
         key = phase
         if phase == "internal_force":
             key = "internal_force@1" if threads == 1 else "internal_force@all"
+        if formulation:  # the mixed variants: keys of their own, read by the mixed section only
+            key += "#" + formulation
         if b.get("aggregate_name") == "median":
             medians[(key, cells)] = dict(b, time_ms=to_ms(b["real_time"], b["time_unit"]),
                                          cpu_ms=to_ms(b["cpu_time"], b["time_unit"]))
@@ -361,6 +366,38 @@ def main():
         f"{held[c]:.0f}" if c in held else "–" for c in sizes) + " |")
     w("")
 
+    # --- mixed p-u formulation -----------------------------------------------------------------
+    mixed_sizes = [c for c in sizes if med.get(("step#mixed_cell_average", c))]
+    if mixed_sizes:
+        w("## The mixed p–u formulation\n")
+        w("The same block with the soil in the mixed p–u formulation (docs/theory.md §11, "
+          "ν = 0.49): one pressure unknown more per node, the kernel's pressure blocks and "
+          "the cell's pressure stabilisation; with the cell-averaged volume change (F-bar, §12, "
+          "the default) every mixed point's dF and B are also computed once more, for its "
+          "cell's average, and the tangent gains the average's coupling terms. Medians, ms; "
+          "× = against the displacement formulation at the same size.\n")
+        variants = [("displacement", ""), ("mixed, per point", "#mixed_per_point"),
+                    ("mixed, cell average", "#mixed_cell_average")]
+        w("| size | formulation | free unknowns | tangent non-zeros | internal force (1 thread) "
+          "| factorise + solve | whole step | Newton iterations |")
+        w("|---|---|---|---|---|---|---|---|")
+        for c in mixed_sizes:
+            for label, tag in variants:
+                def cell(key):
+                    value, base = t(key + tag, c), t(key, c)
+                    if value is None:
+                        return "–"
+                    return fmt_ms(value) + ("" if not tag or not base else f" (×{value / base:.2f})")
+                free = counter("factorize_solve" + tag, c, "free_dofs")
+                nnz = counter("factorize_solve" + tag, c, "nnz")
+                its = counter("step" + tag, c, "newton_iterations")
+                its_text = f"{its:.0f}" if its is not None else "–"
+                w(f"| {c}x{c} ({fmt_count(points[c])} points) | {label} | "
+                  f"{fmt_count(free) if free else '–'} | {fmt_count(nnz) if nnz else '–'} | "
+                  f"{cell('internal_force@1')} | {cell('factorize_solve')} | {cell('step')} | "
+                  f"{its_text} |")
+        w("")
+
     # --- growth --------------------------------------------------------------------------------
     w("## Growth with size\n")
     w("Exponent p of time ~ n^p (n = material points): least-squares slope of log time against "
@@ -456,7 +493,16 @@ def main():
 
     if args.notes and os.path.exists(args.notes):
         with open(args.notes) as f:
-            w(f.read().rstrip() + "\n")
+            notes = f.read().rstrip()
+        # The footing timings are written by scripts/validation_report.py; the notes mark where
+        # they go, so the doc always carries the last ones (without their title).
+        marker = "<!-- bench/footing_timings.md -->"
+        timings = os.path.join(os.path.dirname(os.path.abspath(__file__)), "footing_timings.md")
+        if marker in notes and os.path.exists(timings):
+            with open(timings) as f:
+                body = f.read().strip().split("\n", 1)[-1].strip()
+            notes = notes.replace(marker, body)
+        w(notes + "\n")
 
     w("## Reproducing\n")
     w("```sh\nBUILD_DIR=build bench/run_benchmarks.sh            # all sizes, 3 to 10 min on 2 cores\n"

@@ -10,7 +10,19 @@ constexpr double side = 10.0;  // m: the block is side x side whatever the cell 
 
 }  // namespace
 
-spec::Model block_under_gravity(int cells) {
+const char* formulation_name(Formulation f) {
+  switch (f) {
+    case Formulation::Displacement:
+      return "displacement";
+    case Formulation::MixedPerPoint:
+      return "mixed_per_point";
+    case Formulation::MixedCellAverage:
+      return "mixed_cell_average";
+  }
+  return "";
+}
+
+spec::Model block_under_gravity(int cells, Formulation formulation) {
   spec::Model model;
   model.title = "benchmark: elastic block under self-weight";
   model.kinematics = Kinematics::PlaneStrain;
@@ -23,8 +35,13 @@ spec::Model block_under_gravity(int cells) {
 
   // A soil-like stiffness in kN, m, t: self-weight strains of about 1e-3, so Newton converges
   // in the few iterations a quasi-static soil step takes.
-  model.materials.push_back(
-      {"soil", "linear_elastic", {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}}, {}, {}});
+  const bool mixed = formulation != Formulation::Displacement;
+  model.materials.push_back({"soil",
+                             "linear_elastic",
+                             {{"E", 1e5}, {"nu", mixed ? 0.49 : 0.3}, {"density", 2.0}},
+                             mixed ? spec::Formulation::Mixed : spec::Formulation::Displacement,
+                             {}});
+  model.numerics.mixed_volume_average = formulation == Formulation::MixedCellAverage;
 
   spec::Body body;
   body.name = "block";
@@ -52,11 +69,11 @@ spec::Model block_under_gravity(int cells) {
   return model;
 }
 
-StepCase::StepCase(int cells) : cells_(cells) {
+StepCase::StepCase(int cells, Formulation formulation) : cells_(cells), formulation_(formulation) {
   release_free_heap();
   baseline_resident_ = resident_bytes();
   const std::size_t before = heap_in_use();
-  model_ = build_model(block_under_gravity(cells));
+  model_ = build_model(block_under_gravity(cells, formulation));
   phase_ = std::make_unique<PhaseContext>(*model_, model_->spec.phases.front());
   memory_.model = double(heap_in_use() - before);
 }
@@ -64,14 +81,8 @@ StepCase::StepCase(int cells) : cells_(cells) {
 void StepCase::map() {
   if (!grid_) {
     heap_before_grid_ = heap_in_use();
-    // The settings StepSolver derives from the model.
-    GridSettings settings;
-    settings.kinematics = model_->kinematics();
-    settings.empty_cell_modulus =
-        model_->spec.numerics.empty_cell_stiffness * model_->largest_modulus();
-    settings.buffer_layers = model_->spec.numerics.buffer_layers;
     grid_ = std::make_unique<GridSystem>(model_->mesh, model_->topology,
-                                         model_->material_pointers(), settings);
+                                         model_->material_pointers(), grid_settings(*model_));
   }
   grid_->initialise(model_->points);
   f_ext_ = grid_->external_force(model_->points, phase_->gravity(1.0), {});
@@ -210,11 +221,11 @@ double StepCase::saved_points_bytes() const {
                          : 0.0;
 }
 
-StepCase& step_case(int cells) {
+StepCase& step_case(int cells, Formulation formulation) {
   static std::unique_ptr<StepCase> current;
-  if (!current || current->cells() != cells) {
-    current.reset();  // first free the previous size, then build the next
-    current = std::make_unique<StepCase>(cells);
+  if (!current || current->cells() != cells || current->formulation() != formulation) {
+    current.reset();  // first free the previous case, then build the next
+    current = std::make_unique<StepCase>(cells, formulation);
   }
   return *current;
 }

@@ -21,8 +21,14 @@
 
 namespace geompm::bench {
 
-/// The benchmark model with `cells` x `cells` cells (4 (cells - 1) cells material points).
-spec::Model block_under_gravity(int cells);
+/// How the block's soil is formulated: the displacement formulation, or the mixed p-u one
+/// (docs/theory.md §11) with each point's own volume change or its cell's average (F-bar, §12).
+enum class Formulation { Displacement, MixedPerPoint, MixedCellAverage };
+const char* formulation_name(Formulation f);
+
+/// The benchmark model with `cells` x `cells` cells (4 (cells - 1) cells material points); in
+/// the mixed formulations the soil is nearly incompressible (nu = 0.49), as undrained clay is.
+spec::Model block_under_gravity(int cells, Formulation formulation = Formulation::Displacement);
 
 /// Heap held by each stage of a step, measured the first time the stage is built (0: not yet).
 struct StageMemory {
@@ -33,9 +39,10 @@ struct StageMemory {
 
 class StepCase {
  public:
-  explicit StepCase(int cells);
+  StepCase(int cells, Formulation formulation);
 
   int cells() const { return cells_; }
+  Formulation formulation() const { return formulation_; }
   Model& model() { return *model_; }
   Index points() const { return model_->points.size(); }
 
@@ -87,6 +94,7 @@ class StepCase {
 
  private:
   int cells_;
+  Formulation formulation_;
   std::size_t baseline_resident_ = 0;
   std::unique_ptr<Model> model_;
   std::unique_ptr<PhaseContext> phase_;
@@ -110,8 +118,8 @@ class StepCase {
   std::optional<MaterialPoints> initial_points_;
 };
 
-/// The case of the given size, built on first use; building another size drops this one first,
-/// so only one model is in memory at a time (benchmarks run size by size).
-StepCase& step_case(int cells);
+/// The case of the given size and formulation, built on first use; building another drops this
+/// one first, so only one model is in memory at a time (benchmarks run case by case).
+StepCase& step_case(int cells, Formulation formulation = Formulation::Displacement);
 
 }  // namespace geompm::bench

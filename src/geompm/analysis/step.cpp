@@ -8,8 +8,6 @@
 
 namespace geompm {
 
-namespace {
-
 GridSettings grid_settings(const Model& model) {
   GridSettings s;
   s.kinematics = model.kinematics();
@@ -32,6 +30,8 @@ GridSettings grid_settings(const Model& model) {
                       spec::Formulation::Mixed);
   return s;
 }
+
+namespace {
 
 // The Lagrangian phase as a nonlinear problem in the free displacement increments: residual
 // R = f_ext - f_int - M a (seed eq. 6) with a from Newmark (eq. 8) in dynamics.

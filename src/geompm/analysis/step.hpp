@@ -28,6 +28,10 @@ struct StepResult {
   std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
 };
 
+/// The grid's settings for a model: kinematics, interpolation, empty-cell stiffness, buffer
+/// layers and, per material, the formulation and the mixed points' volume change.
+GridSettings grid_settings(const Model& model);
+
 class StepSolver {
  public:
   StepSolver(Model& model, LinearSolver& solver);
