@@ -6,4 +6,9 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
 cd build
+# ctest runs as many tests at once as there are cores, and each test's OpenMP loops use every
+# core: with threads that spin while they wait (the OpenMP default) the tests take turns at each
+# other's barriers, and a footing validation test took 160 s instead of 21 s beside another one
+# (docs/performance.md, note 4). Waiting threads sleep instead, unless the caller says otherwise.
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 ctest --output-on-failure -j "$(nproc)" --timeout 1200 "$@"
