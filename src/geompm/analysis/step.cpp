@@ -166,7 +166,7 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
   for (Index p = 0; p < n; ++p) {
     // The footing touches a point at the top of its domain: the image of the seeded domain's
     // top under the point's F (eq. 13.1), carried by the step's deformation within the step.
-    offset[p] = points.initial_half_size[p](v) * points.deformation_gradient[p].col(v);
+    offset[p] = points.initial_half_size[p](v) * points.domain_deformation(p, dim).col(v);
     for (int i = dim; i < 3; ++i) offset[p](i) = 0.0;
   }
   for (const RigidFooting& footing : phase.footings) {
@@ -181,8 +181,8 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
     for (Index p = 0; p < n; ++p) {
       if (!in_body[points.body[p]]) continue;
       // Its horizontal extent: the cpGIMP half-lengths (eq. 9.4) at the start of the step.
-      Vec3 half =
-          particle_half_lengths(points.initial_half_size[p], points.deformation_gradient[p], dim);
+      Vec3 half = particle_half_lengths(points.initial_half_size[p],
+                                        points.domain_deformation(p, dim), dim);
       half(v) = 0.0;
       const Vec3 top = points.position[p] + offset[p];
       // A point may touch the base in this step if its domain, grown by a cell, reaches it.

@@ -682,7 +682,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         // spring and its state.
         const FiniteStrainState* state = &r.state;
         const Mat3* stress = &r.state.cauchy_stress;
-        double volume = 0.0;
+        double volume = 0.0, own_volume = 0.0;
         bool ok = false;
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
@@ -700,6 +700,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
               state = &rm.u.state;
               stress = &rm.total_stress;
               volume = rm.u.state_volume;
+              own_volume = rm.u.volume;
             }
           }
         }
@@ -708,7 +709,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
           if (ok) {
             f_cell.template head<n>() += r.internal_force;
             if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
-            volume = r.volume;
+            volume = own_volume = r.volume;
           }
         }
         if (!ok) {
@@ -717,7 +718,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         }
         if (has_point_force(p))
           add_point_forces(p, s.N, s.dN_dX, du_local, tangent != nullptr, f_cell, K_cell);
-        commit(p, *state, volume, *stress);
+        commit(p, *state, volume, *stress, own_volume);
       }
       for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
       if (tangent) {
@@ -826,8 +827,9 @@ void GridSystem::build_dual_domain_stencils(const MaterialPoints& points) {
 // ---------------------------------------------------------------------------------------------
 
 void GridSystem::build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active) {
-  // Each point's domain: the seeded half-lengths stretched with the diagonal of F (cpGIMP,
-  // eq. 9.4), clipped to the grid (eq. 9.5); weights and gradients eq. 9.1-9.3 on the grid at
+  // Each point's domain: the seeded half-lengths stretched with the diagonal of its domain's F
+  // (cpGIMP, eq. 9.4; with a volume average the domain follows the point's own motion, eq. 12.7),
+  // clipped to the grid (eq. 9.5); weights and gradients eq. 9.1-9.3 on the grid at
   // the start of the step. Node ids are the mesh's here (initialise renumbers them); every
   // cell the domain overlaps is marked occupied.
   const RectilinearGrid& grid = *rectilinear_;
@@ -839,8 +841,8 @@ void GridSystem::build_gimp_stencils(const MaterialPoints& points, std::vector<c
   wide_gradients_.clear();
   GimpStencil s;
   for (Index p = 0; p < n_points; ++p) {
-    const Vec3 half =
-        particle_half_lengths(points.initial_half_size[p], points.deformation_gradient[p], dim_);
+    const Vec3 half = particle_half_lengths(points.initial_half_size[p],
+                                            points.domain_deformation(p, dim_), dim_);
     gimp_stencil(grid, points.position[p], half, points.cell[p], axisymmetric, s);
     wide_nodes_.insert(wide_nodes_.end(), s.nodes.begin(), s.nodes.end());
     wide_N_.insert(wide_N_.end(), s.N.begin(), s.N.end());
@@ -941,12 +943,12 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
           K_local.resize(local, local);
           K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
         }
-        commit(p, rm.u.state, rm.u.state_volume, rm.total_stress);
+        commit(p, rm.u.state, rm.u.state_volume, rm.total_stress, rm.u.volume);
       } else {
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
         f_local = r.internal_force;
         if (tangent) K_local = r.stiffness;
-        commit(p, r.state, r.state_volume, r.state.cauchy_stress);
+        commit(p, r.state, r.state_volume, r.state.cauchy_stress, r.volume);
       }
       // Springs and point force laws act on the displacements, the first ns * Dim local unknowns.
       if (has_point_force(p))

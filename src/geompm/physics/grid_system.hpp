@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -213,9 +214,12 @@ class GridSystem {
   PointStartState start_state(const MaterialPoints& points, Index p) const;
   /// Point p's updated state at the current evaluation: written to the points only when
   /// commit_state() asks for it (`stress`: the total stress, which the mixed formulation
-  /// changes).
-  void commit(Index p, const FiniteStrainState& state, double volume, const Mat3& stress) const {
+  /// changes; `own_volume`: the volume its own deformation gives, which differs from `volume`
+  /// with a cell's volume average and stretches its domain, eq. 12.7).
+  void commit(Index p, const FiniteStrainState& state, double volume, const Mat3& stress,
+              double own_volume) const {
     if (!commit_to_) return;
+    commit_to_->domain_stretch[p] *= std::pow(own_volume / volume, 1.0 / dim_);
     commit_to_->stress[p] = stress;
     commit_to_->deformation_gradient[p] = state.deformation_gradient;
     commit_to_->elastic_left_cauchy_green[p] = state.elastic_left_cauchy_green;

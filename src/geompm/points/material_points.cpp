@@ -23,6 +23,7 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
   initial_half_size.push_back(half_size);
   stress.push_back(Mat3::Zero());
   deformation_gradient.push_back(Mat3::Identity());
+  domain_stretch.push_back(1.0);
   elastic_left_cauchy_green.push_back(Mat3::Identity());
   internal.push_back(InternalVariables{});
   cell.push_back(cell_index);
@@ -51,6 +52,7 @@ void for_each_field(MaterialPoints& p, Fn&& fn) {
   fn(p.initial_half_size);
   fn(p.stress);
   fn(p.deformation_gradient);
+  fn(p.domain_stretch);
   fn(p.elastic_left_cauchy_green);
   fn(p.internal);
   fn(p.cell);

@@ -30,9 +30,14 @@ struct MaterialPoints {
   std::vector<double> mass;
   std::vector<double> volume;  // current; per radian in axisymmetry
   std::vector<double> initial_volume;
-  std::vector<Vec3> initial_half_size;          // half-lengths of the seeded domain per axis (GIMP)
-  std::vector<Mat3> stress;                     // Cauchy, tension positive
-  std::vector<Mat3> deformation_gradient;       // total F
+  std::vector<Vec3> initial_half_size;     // half-lengths of the seeded domain per axis (GIMP)
+  std::vector<Mat3> stress;                // Cauchy, tension positive
+  std::vector<Mat3> deformation_gradient;  // total F (the averaged F^ of a mixed point, §12)
+  /// How much a mixed point's own volume change, along the grid's directions, has exceeded its
+  /// cell's average over all steps so far, as a stretch: its domain follows the grid's motion,
+  /// F_domain = F^ scaled by this on the grid's directions (docs/theory.md eq. 12.7); 1 without
+  /// an average.
+  std::vector<double> domain_stretch;
   std::vector<Mat3> elastic_left_cauchy_green;  // b_e = F_e F_e^T
   std::vector<InternalVariables> internal;
   std::vector<Index> cell;  // cell containing the point
@@ -44,6 +49,14 @@ struct MaterialPoints {
   /// half-lengths along the axes of the region the point represents (its GIMP domain).
   Index add(Index body_index, Index material_index, const Vec3& x, double volume, double density,
             Index cell, const Vec3& xi, const Vec3& half_size);
+
+  /// The deformation gradient of point p's domain: F scaled by its domain stretch on the first
+  /// `dim` directions (the grid's).
+  Mat3 domain_deformation(Index p, int dim) const {
+    Mat3 F = deformation_gradient[p];
+    F.topRows(dim) *= domain_stretch[p];
+    return F;
+  }
 
   /// Removes the points whose flag is set, keeping the order of the rest.
   void remove(const std::vector<char>& flag);
