@@ -11,12 +11,11 @@
 //   over-estimate measured on this mesh at 0.05 B (docs/validation.md §8; a check of the model's
 //   behaviour, not of the bearing capacity, which §8 reports as not reached).
 // - the rigid footings (penalty contact at the points, docs/theory.md §13), whose loaded width is
-//   exactly B: q/s_u in the band 5.14-5.40 at 0.1 B on this mesh (docs/validation.md §4).
-// Not asserted: the band for the steel block, which no affordable mesh reached (+7 % at
-// h = B/20, where the footing's edge spreads over a cell; 5.11, just below it, at B/40:
-// docs/validation.md §5); the rough rigid footing at nu = 0.4999, which stops before 0.1 B when a
-// point at the footing's edge collapses (§4); smooth <= rough, which the rigid footings do not
-// show at 0.1 B (§4).
+//   exactly B: q/s_u in the band 5.14-5.40 and < 2 % apart between the two nu, in the mean over
+//   0.08-0.1 B, and for the smooth one at 0.1 B itself (docs/validation.md §4).
+// Not asserted: the steel block at h = B/40 (just below the band, docs/validation.md §5); the rough
+// rigid footing's value at 0.1 B at nu = 0.4999 (5.13, just below the band, within the
+// cell-crossing noise; §4); smooth <= rough, which the rigid footings do not show (§4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -134,36 +133,51 @@ TEST(StripFootingValidation, MixedPUDoesNotDependOnNuAndNewtonStaysAtTenIteratio
 
 TEST(StripFootingValidation, RigidFootingsCarryPrandtlsLoadAtTheirOwnWidth) {
   // The rigid footings act on the soil only through the points under them, each with the part
-  // of its domain under the footprint, so the loaded width is B (docs/theory.md §12) and the
-  // O(h) over-estimate of the steel block (+7 % at h = B/20) is gone: docs/validation.md §4
-  // measured q/s_u at 0.1 B = 5.37 (smooth) and 5.23 (rough) at nu = 0.49, 5.14 (smooth) at
-  // nu = 0.4999, with curves that oscillate by about +-3 % as points cross cells.
-  const auto& smooth =
-      run_footing(strip(Strip::RigidSmooth, 0.49, "mixed"), "rigid_smooth_049", kStripScale);
-  const auto& smooth_stiff =
-      run_footing(strip(Strip::RigidSmooth, 0.4999, "mixed"), "rigid_smooth_04999", kStripScale);
-  const auto& rough =
-      run_footing(strip(Strip::RigidRough, 0.49, "mixed"), "rigid_rough_049", kStripScale);
-  const double qs = smooth.q_at(0.1), qr = rough.q_at(0.1);
-  const double ms = smooth.q_mean(0.08, 0.1), ms_stiff = smooth_stiff.q_mean(0.08, 0.1),
-               mr = rough.q_mean(0.08, 0.1);
-  std::printf(
-      "[rigid strip, p-u, 0.1 B] q/s_u smooth %.3f, rough %.3f; mean over 0.08-0.1 B "
-      "smooth %.3f (nu 0.49), %.3f (nu 0.4999), rough %.3f\n",
-      qs, qr, ms, ms_stiff, mr);
-  // The band of the issue: 2 + pi <= q/s_u <= 5.40 at 0.1 B (nu = 0.49), and in the mean over
-  // 0.08-0.1 B, which smooths the cell-crossing noise, also at nu = 0.4999.
-  for (const double q : {qs, qr, ms, ms_stiff, mr}) {
-    EXPECT_GE(q, kPrandtl);
-    EXPECT_LE(q, 5.40);
+  // of its domain under the footprint, so the loaded width is B (docs/theory.md §13) and the
+  // O(h) over-estimate of the steel block's edge is gone. Their curves oscillate by about +-3 %
+  // as points cross cells, so besides the value at 0.1 B the mean over 0.08-0.1 B is checked.
+  // docs/validation.md §4 measured at 0.1 B (nu = 0.49 / 0.4999): smooth 5.33 / 5.32, rough
+  // 5.26 / 5.13; means over 0.08-0.1 B: smooth 5.32 / 5.37, rough 5.21 / 5.15.
+  struct Pair {
+    const Footing& stiff;  // nu = 0.4999
+    const Footing& soft;   // nu = 0.49
+  };
+  const Pair smooth{
+      run_footing(strip(Strip::RigidSmooth, 0.4999, "mixed"), "rigid_smooth_04999", kStripScale),
+      run_footing(strip(Strip::RigidSmooth, 0.49, "mixed"), "rigid_smooth_049", kStripScale)};
+  const Pair rough{
+      run_footing(strip(Strip::RigidRough, 0.4999, "mixed"), "rigid_rough_04999", kStripScale),
+      run_footing(strip(Strip::RigidRough, 0.49, "mixed"), "rigid_rough_049", kStripScale)};
+  for (const auto& [name, pair] : {std::pair{"smooth", smooth}, std::pair{"rough", rough}}) {
+    const double q_soft = pair.soft.q_at(0.1), q_stiff = pair.stiff.q_at(0.1);
+    const double m_soft = pair.soft.q_mean(0.08, 0.1), m_stiff = pair.stiff.q_mean(0.08, 0.1);
+    std::printf(
+        "[rigid strip, %s, p-u] q/s_u at 0.1 B %.3f (nu 0.49), %.3f (nu 0.4999); mean over "
+        "0.08-0.1 B %.3f, %.3f\n",
+        name, q_soft, q_stiff, m_soft, m_stiff);
+    // The band of the issue, 2 + pi <= q/s_u <= 5.40, in the mean over 0.08-0.1 B at both nu,
+    // and the locking-free target of REFERENCES §3: the mean moves by < 2 % between nu = 0.49
+    // and 0.4999 (measured 1.0 % smooth, 1.2 % rough).
+    for (const double m : {m_soft, m_stiff}) {
+      EXPECT_GE(m, kPrandtl) << name;
+      EXPECT_LE(m, 5.40) << name;
+    }
+    EXPECT_LT(std::abs(m_stiff / m_soft - 1.0), 0.02) << name;
+    // At 0.1 B itself: in the band at nu = 0.49.
+    EXPECT_GE(q_soft, kPrandtl) << name;
+    EXPECT_LE(q_soft, 5.40) << name;
+    // Issue 3: at most 10 Newton iterations per step (the examples cut back a step that needs
+    // more; the run must still reach 0.1 B).
+    EXPECT_LE(pair.soft.max_iterations(), 10) << name;
+    EXPECT_LE(pair.stiff.max_iterations(), 10) << name;
   }
-  // Locking-free: the mean moves by 2.1 % between nu = 0.49 and 0.4999 (the 2 % target of
-  // REFERENCES §3 is not quite reached, docs/validation.md §4); asserted: < 3 %.
-  EXPECT_LT(std::abs(ms_stiff / ms - 1.0), 0.03);
-  // Issue 3: at most 10 Newton iterations per step.
-  EXPECT_LE(smooth.max_iterations(), 10);
-  EXPECT_LE(smooth_stiff.max_iterations(), 10);
-  EXPECT_LE(rough.max_iterations(), 10);
+  // At 0.1 B at nu = 0.4999, and the < 2 % between the values at 0.1 B: the smooth footing
+  // (0.1 % apart). The rough one lands at 5.13, just below the band, 2.5 % from its nu = 0.49
+  // value, within the cell-crossing noise; docs/validation.md §4 reports it as not reached.
+  const double qs_soft = smooth.soft.q_at(0.1), qs_stiff = smooth.stiff.q_at(0.1);
+  EXPECT_GE(qs_stiff, kPrandtl);
+  EXPECT_LE(qs_stiff, 5.40);
+  EXPECT_LT(std::abs(qs_stiff / qs_soft - 1.0), 0.02);
 }
 
 TEST(StripFootingValidation, DisplacementFormulationLocksWhereMixedPUDoesNot) {
