@@ -237,6 +237,9 @@ output:
   EXPECT_TRUE(Contains(r.err, "run stopped: phase 'stubborn'"));
   EXPECT_TRUE(Contains(r.err, "did not converge with the smallest allowed time step (0.1)"));
   EXPECT_TRUE(Contains(r.err, "no convergence in 1 iterations"));
+  // ... and where the model is most out of balance: the unknown, its node and position.
+  EXPECT_TRUE(Contains(r.err, "; largest out-of-balance force ")) << r.err;
+  EXPECT_TRUE(Contains(r.err, " in y at node ")) << r.err;
   EXPECT_TRUE(Contains(r.err, "Results up to time 1 are in out"));
 
   const Csv history = read_csv(work() / "out" / "history.csv");

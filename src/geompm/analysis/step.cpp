@@ -1,6 +1,9 @@
 #include "geompm/analysis/step.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <string>
 #include <unordered_map>
 
 #include "geompm/physics/gimp_weights.hpp"
@@ -51,6 +54,7 @@ class LagrangianProblem final : public NonlinearProblem {
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                 SparseMatrix* tangent) override {
     scatter(x);
+    worst_dof_ = -1;
     if (!grid_.internal_force(points_, du_, f_int_, tangent)) return false;
     inertia_ = Vector::Zero(du_.size());
     if (dynamic_)
@@ -60,7 +64,11 @@ class LagrangianProblem final : public NonlinearProblem {
     residual.resize(x.size());
     const auto& free = grid_.free_index();
     for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-      if (free[d] >= 0) residual(free[d]) = r(d);
+      if (free[d] >= 0) {
+        residual(free[d]) = r(d);
+        if (worst_dof_ < 0 || std::abs(r(d)) > std::abs(r(worst_dof_))) worst_dof_ = d;
+      }
+    worst_value_ = worst_dof_ >= 0 ? r(worst_dof_) : 0.0;
     // The forces in play; in dynamics also the momentum rate M v / dt, so that a body moving
     // freely without loads is measured against its own motion, not against round-off.
     force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
@@ -85,6 +93,10 @@ class LagrangianProblem final : public NonlinearProblem {
   }
 
   const Vector& internal_force() const { return f_int_; }
+  /// The free unknown with the largest out-of-balance force at the last admissible evaluation
+  /// (-1 if the last evaluation turned a point inside out), and that force.
+  Index worst_dof() const { return worst_dof_; }
+  double worst_value() const { return worst_value_; }
   const Vector& inertia() const { return inertia_; }
 
  private:
@@ -102,7 +114,25 @@ class LagrangianProblem final : public NonlinearProblem {
   Newmark newmark_;
   std::vector<int> diagonal_;
   Vector f_int_, inertia_;
+  Index worst_dof_ = -1;
+  double worst_value_ = 0.0;
 };
+
+// Where a step that did not converge is out of balance most: the unknown, its node and the
+// force, so that a user can see which part of the model holds Newton back.
+std::string out_of_balance(const GridSystem& grid, const Mesh& mesh, Index dof, double value) {
+  const int dim = grid.dim();
+  const Index displacements = static_cast<Index>(grid.active_nodes().size()) * dim;
+  const bool pressure = dof >= displacements;
+  const Index node = grid.active_nodes()[pressure ? dof - displacements : dof / dim];
+  const Vec3& x = mesh.nodes[node];
+  const std::string at = dim == 3 ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
+                                  : fmt::format("({:.4g}, {:.4g})", x.x(), x.y());
+  if (pressure)
+    return fmt::format("largest residual in the pressure equation of node {} at {}", node, at);
+  return fmt::format("largest out-of-balance force {:.3g} in {} at node {} {}", value,
+                     "xyz"[dof % dim], node, at);
+}
 
 }  // namespace
 
@@ -316,7 +346,12 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.max_halvings = phase.spec->newton.line_search;
   Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
   result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
-  if (!result.newton.converged) return result;
+  if (!result.newton.converged) {
+    if (problem.worst_dof() >= 0)
+      result.newton.failure +=
+          "; " + out_of_balance(grid_, model_.mesh, problem.worst_dof(), problem.worst_value());
+    return result;
+  }
   result.converged = true;
 
   // --- phase 3: convect ---------------------------------------------------------------------
