@@ -241,6 +241,16 @@ output:
   EXPECT_TRUE(Contains(r.err, "; largest out-of-balance force ")) << r.err;
   EXPECT_TRUE(Contains(r.err, " in y at node ")) << r.err;
   EXPECT_TRUE(Contains(r.err, "Results up to time 1 are in out"));
+  // newton.csv names the same node for the last iterate of the failed step (unknown 1: y).
+  std::smatch node;
+  ASSERT_TRUE(std::regex_search(r.err, node, std::regex(R"re( in y at node (\d+) )re"))) << r.err;
+  const Csv newton = read_csv(work() / "out" / "newton.csv");
+  ASSERT_FALSE(newton.rows.empty());
+  EXPECT_EQ(newton.column("converged").back(), 0.0);
+  EXPECT_EQ(newton.column("largest_residual_node").back(), std::stod(node[1].str()));
+  EXPECT_EQ(newton.column("largest_residual_unknown").back(), 1.0);
+  for (const double unknown : newton.column("largest_residual_unknown"))
+    EXPECT_TRUE(unknown == 0.0 || unknown == 1.0) << "a displacement model: x or y";
 
   const Csv history = read_csv(work() / "out" / "history.csv");
   expect_consecutive_steps(history);

@@ -60,15 +60,21 @@ class OutputWriter {
         grid_series_(dir / "grid.pvd"),
         recorder_(model),
         history_(dir / "history.csv", recorder_.columns()),
-        newton_(dir / "newton.csv", {"step", "time", "dt", "iteration", "relative_residual",
-                                     "relative_correction", "converged"}) {}
+        newton_(dir / "newton.csv",
+                {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
+                 "converged", "largest_residual_node", "largest_residual_unknown"}) {}
 
-  /// Every Newton attempt, converged or cut back: one row per iteration.
-  void newton_log(int step_number, double time, double dt, const NewtonResult& newton) {
-    for (std::size_t k = 0; k < newton.residuals.size(); ++k)
+  /// Every Newton attempt, converged or cut back: one row per iteration, with where the
+  /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation).
+  void newton_log(int step_number, double time, double dt, const StepResult& step) {
+    const NewtonResult& newton = step.newton;
+    for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
+      const UnknownAt at =
+          k < step.largest_residual.size() ? step.largest_residual[k] : UnknownAt{};
       newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
                       k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
-                      newton.converged ? 1.0 : 0.0});
+                      newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown)});
+    }
   }
 
   void initial() {
@@ -163,7 +169,7 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
       double dt_try = std::min(dt, remaining);
       if (remaining - dt_try < 0.01 * dt_try) dt_try = remaining;  // no sliver of a last step
       StepResult step = stepper.advance(phase, t, dt_try);
-      output.newton_log(step_number + 1, time + dt_try, dt_try, step.newton);
+      output.newton_log(step_number + 1, time + dt_try, dt_try, step);
       if (!step.converged) {
         ++summary.cutbacks;
         dt = dt_try * ts.cutback;

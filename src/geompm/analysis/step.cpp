@@ -96,6 +96,7 @@ class LagrangianProblem final : public NonlinearProblem {
   /// The free unknown with the largest out-of-balance force at the last admissible evaluation
   /// (-1 if the last evaluation turned a point inside out), and that force.
   Index worst_dof() const { return worst_dof_; }
+  Index largest_residual_unknown() const override { return worst_dof_; }
   double worst_value() const { return worst_value_; }
   const Vector& inertia() const { return inertia_; }
 
@@ -118,20 +119,27 @@ class LagrangianProblem final : public NonlinearProblem {
   double worst_value_ = 0.0;
 };
 
+// A grid unknown as the mesh node it belongs to and what it is: displacement component 0..2
+// (x, y, z) or 3, the pressure (displacements first, then the pressures: theory eq. 11.6).
+UnknownAt unknown_at(const GridSystem& grid, Index dof) {
+  const int dim = grid.dim();
+  const Index displacements = static_cast<Index>(grid.active_nodes().size()) * dim;
+  if (dof >= displacements) return {grid.active_nodes()[dof - displacements], 3};
+  return {grid.active_nodes()[dof / dim], static_cast<int>(dof % dim)};
+}
+
 // Where a step that did not converge is out of balance most: the unknown, its node and the
 // force, so that a user can see which part of the model holds Newton back.
 std::string out_of_balance(const GridSystem& grid, const Mesh& mesh, Index dof, double value) {
-  const int dim = grid.dim();
-  const Index displacements = static_cast<Index>(grid.active_nodes().size()) * dim;
-  const bool pressure = dof >= displacements;
-  const Index node = grid.active_nodes()[pressure ? dof - displacements : dof / dim];
-  const Vec3& x = mesh.nodes[node];
-  const std::string at = dim == 3 ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
-                                  : fmt::format("({:.4g}, {:.4g})", x.x(), x.y());
-  if (pressure)
-    return fmt::format("largest residual in the pressure equation of node {} at {}", node, at);
+  const UnknownAt u = unknown_at(grid, dof);
+  const Vec3& x = mesh.nodes[u.node];
+  const std::string at = grid.dim() == 3
+                             ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
+                             : fmt::format("({:.4g}, {:.4g})", x.x(), x.y());
+  if (u.unknown == 3)
+    return fmt::format("largest residual in the pressure equation of node {} at {}", u.node, at);
   return fmt::format("largest out-of-balance force {:.3g} in {} at node {} {}", value,
-                     "xyz"[dof % dim], node, at);
+                     "xyz"[u.unknown], u.node, at);
 }
 
 }  // namespace
@@ -346,6 +354,8 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.max_halvings = phase.spec->newton.line_search;
   Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
   result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
+  for (const Index dof : result.newton.largest)
+    result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
   if (!result.newton.converged) {
     if (problem.worst_dof() >= 0)
       result.newton.failure +=

@@ -15,9 +15,18 @@
 
 namespace geompm {
 
+/// A grid unknown: the mesh node it belongs to and what it is (0, 1, 2: displacement in x, y,
+/// z; 3: pressure); node -1 if not known.
+struct UnknownAt {
+  Index node = -1;
+  int unknown = -1;
+};
+
 struct StepResult {
   bool converged = false;
   NewtonResult newton;
+  /// Per entry of newton.residuals: the unknown with the largest residual (newton.csv).
+  std::vector<UnknownAt> largest_residual;
   // Grid solution of the converged step (dof-indexed over grid.active_nodes()).
   Vector displacement, velocity, acceleration;
   Vector reaction;                    // f_int + M a - f_ext, non-zero at constrained dofs

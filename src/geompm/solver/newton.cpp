@@ -40,6 +40,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       return result;
     }
     result.residuals.push_back(relative);
+    result.largest.push_back(problem.largest_residual_unknown());
     if (!std::isfinite(relative)) {
       result.failure = "the residual is not finite";
       return result;

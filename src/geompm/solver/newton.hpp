@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "geompm/core/types.hpp"
 #include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
@@ -21,6 +22,9 @@ class NonlinearProblem {
                         SparseMatrix* tangent) = 0;
   /// Norm of the whole increment of the step at x (prescribed parts included).
   virtual double increment_norm(const Vector& x) const = 0;
+  /// The unknown with the largest residual at the last evaluation, in the problem's own
+  /// numbering, or -1 if the problem does not say (for diagnostics only).
+  virtual Index largest_residual_unknown() const { return -1; }
 };
 
 struct NewtonSettings {
@@ -40,6 +44,7 @@ struct NewtonResult {
   int halvings = 0;                 // corrections halved by the backtracking
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
+  std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()
   std::string failure;              // why it did not converge
 };
 
