@@ -93,9 +93,8 @@ class LagrangianProblem final : public NonlinearProblem {
   }
 
   const Vector& internal_force() const { return f_int_; }
-  /// The free unknown with the largest out-of-balance force at the last admissible evaluation
+  /// The grid unknown with the largest out-of-balance force at the last admissible evaluation
   /// (-1 if the last evaluation turned a point inside out), and that force.
-  Index worst_dof() const { return worst_dof_; }
   Index largest_residual_unknown() const override { return worst_dof_; }
   double worst_value() const { return worst_value_; }
   const Vector& inertia() const { return inertia_; }
@@ -357,9 +356,10 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   for (const Index dof : result.newton.largest)
     result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
   if (!result.newton.converged) {
-    if (problem.worst_dof() >= 0)
+    if (problem.largest_residual_unknown() >= 0)
       result.newton.failure +=
-          "; " + out_of_balance(grid_, model_.mesh, problem.worst_dof(), problem.worst_value());
+          "; " + out_of_balance(grid_, model_.mesh, problem.largest_residual_unknown(),
+                                problem.worst_value());
     return result;
   }
   result.converged = true;
