@@ -54,7 +54,7 @@ class LagrangianProblem final : public NonlinearProblem {
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                 SparseMatrix* tangent) override {
     scatter(x);
-    worst_dof_ = -1;
+    largest_dof_ = -1;
     if (!grid_.internal_force(points_, du_, f_int_, tangent)) return false;
     inertia_ = Vector::Zero(du_.size());
     if (dynamic_)
@@ -66,9 +66,9 @@ class LagrangianProblem final : public NonlinearProblem {
     for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
       if (free[d] >= 0) {
         residual(free[d]) = r(d);
-        if (worst_dof_ < 0 || std::abs(r(d)) > std::abs(r(worst_dof_))) worst_dof_ = d;
+        if (largest_dof_ < 0 || std::abs(r(d)) > std::abs(r(largest_dof_))) largest_dof_ = d;
       }
-    worst_value_ = worst_dof_ >= 0 ? r(worst_dof_) : 0.0;
+    largest_value_ = largest_dof_ >= 0 ? r(largest_dof_) : 0.0;
     // The forces in play; in dynamics also the momentum rate M v / dt, so that a body moving
     // freely without loads is measured against its own motion, not against round-off.
     force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
@@ -95,8 +95,8 @@ class LagrangianProblem final : public NonlinearProblem {
   const Vector& internal_force() const { return f_int_; }
   /// The grid unknown with the largest out-of-balance force at the last admissible evaluation
   /// (-1 if the last evaluation turned a point inside out), and that force.
-  Index largest_residual_unknown() const override { return worst_dof_; }
-  double worst_value() const { return worst_value_; }
+  Index largest_residual_unknown() const override { return largest_dof_; }
+  double largest_residual_value() const { return largest_value_; }
   const Vector& inertia() const { return inertia_; }
 
  private:
@@ -114,8 +114,8 @@ class LagrangianProblem final : public NonlinearProblem {
   Newmark newmark_;
   std::vector<int> diagonal_;
   Vector f_int_, inertia_;
-  Index worst_dof_ = -1;
-  double worst_value_ = 0.0;
+  Index largest_dof_ = -1;
+  double largest_value_ = 0.0;
 };
 
 // A grid unknown as the mesh node it belongs to and what it is: displacement component 0..2
@@ -359,7 +359,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
     if (problem.largest_residual_unknown() >= 0)
       result.newton.failure +=
           "; " + out_of_balance(grid_, model_.mesh, problem.largest_residual_unknown(),
-                                problem.worst_value());
+                                problem.largest_residual_value());
     return result;
   }
   result.converged = true;
