@@ -103,9 +103,11 @@ TEST(GridMotionFooting, RoughFootingHoldsTheTopAndCarriesMore) {
   EXPECT_GT(std::abs(f_rough), 1.001 * std::abs(f_smooth));
   EXPECT_LT(std::abs(f_rough), std::abs(confined_force(0.01)));
   // The nodes of the footing's base do not move sideways.
-  for (Index p = 0; p < rough.model->points.size(); ++p)
-    if (rough.model->points.initial_position[p].y() > 0.95)
+  for (Index p = 0; p < rough.model->points.size(); ++p) {
+    if (rough.model->points.initial_position[p].y() > 0.95) {
       EXPECT_LT(std::abs(rough.model->points.displacement[p].x()), 1e-3 * 0.01);
+    }
+  }
 }
 
 TEST(GridMotionFooting, VelocityAndAFixedNodeOnTheSymmetryAxis) {

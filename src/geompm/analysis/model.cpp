@@ -278,10 +278,12 @@ std::string describe_model(const Model& model) {
   for (std::size_t m = 0; m < spec.materials.size(); ++m) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
-    const bool mixed = spec.materials[m].formulation.value_or(spec.numerics.formulation) ==
-                       spec::Formulation::Mixed;
+    const auto formulation = spec.materials[m].formulation.value_or(spec.numerics.formulation);
+    const char* note = formulation == spec::Formulation::Mixed  ? " (mixed p-u)"
+                       : formulation == spec::Formulation::FBar ? " (F-bar)"
+                                                                : "";
     out += fmt::format("material   {}: {}{}{}\n", spec.materials[m].name, spec.materials[m].model,
-                       params, mixed ? " (mixed p-u)" : "");
+                       params, note);
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;

@@ -27,10 +27,13 @@ GridSettings grid_settings(const Model& model) {
       s.interpolation = GridInterpolation::Gimp;
       break;
   }
-  s.mixed_volume_average = model.spec.numerics.mixed_volume_average;
-  for (const auto& material : model.spec.materials)
-    s.mixed.push_back(material.formulation.value_or(model.spec.numerics.formulation) ==
-                      spec::Formulation::Mixed);
+  for (const auto& material : model.spec.materials) {
+    const auto formulation = material.formulation.value_or(model.spec.numerics.formulation);
+    const bool mixed = formulation == spec::Formulation::Mixed;
+    s.mixed.push_back(mixed);
+    s.volume_average.push_back(formulation == spec::Formulation::FBar ||
+                               (mixed && model.spec.numerics.mixed_volume_average));
+  }
   return s;
 }
 

@@ -107,8 +107,9 @@ spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory,
 }
 
 spec::Formulation read_formulation(const yaml::Node& node) {
-  return node.choice({"displacement", "mixed"}) == "mixed" ? spec::Formulation::Mixed
-                                                           : spec::Formulation::Displacement;
+  const std::string choice = node.choice({"displacement", "f_bar", "mixed"});
+  if (choice == "mixed") return spec::Formulation::Mixed;
+  return choice == "f_bar" ? spec::Formulation::FBar : spec::Formulation::Displacement;
 }
 
 std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context) {

@@ -22,10 +22,12 @@ struct Mesh {
   SourceLocation source;
 };
 
-/// How the stress of a material's points enters equilibrium: from the displacements alone, or
-/// with its mean stress replaced by an independent pressure field (mixed p-u, docs/theory.md
-/// §9) so that nearly incompressible (undrained) soil does not lock.
-enum class Formulation { Displacement, Mixed };
+/// How the stress of a material's points enters equilibrium: from the displacements alone; from
+/// the displacements with each point's volume change replaced by its cell's mean (F-bar,
+/// docs/theory.md §12), so that a dilatant or nearly isochoric plastic flow need only keep one
+/// volume per cell; or with its mean stress replaced by an independent pressure field (mixed
+/// p-u, docs/theory.md §11) so that nearly incompressible (undrained) soil does not lock.
+enum class Formulation { Displacement, FBar, Mixed };
 
 struct Material {
   std::string name;

@@ -42,6 +42,9 @@ GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
       nen_(mesh.nodes_per_cell()) {
   settings_.mixed.resize(materials_.size(), 0);
   mixed_ = std::any_of(settings_.mixed.begin(), settings_.mixed.end(), [](char m) { return m; });
+  settings_.volume_average.resize(materials_.size(), 0);
+  averaging_ = std::any_of(settings_.volume_average.begin(), settings_.volume_average.end(),
+                           [](char a) { return a; });
   if (settings_.interpolation == GridInterpolation::Gimp) {
     std::string why;
     rectilinear_ = find_rectilinear_grid(mesh, why);
@@ -204,8 +207,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
     build_dual_domain_stencils<E>(points);
   union_start_.clear();
   union_nodes_.clear();
-  if (wide_stencil() && mixed_ && settings_.mixed_volume_average)
-    build_mixed_stencil_unions(points);
+  if (wide_stencil() && averaging_) build_averaged_stencil_unions(points);
 
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_dofs = num_dofs();
@@ -417,7 +419,7 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
       for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a)
         for (Index b = wide_start_[p]; b < wide_start_[p + 1]; ++b)
           neighbours[wide_nodes_[a]].push_back(wide_nodes_[b]);
-  // The volume average couples the stencils of a cell's mixed points (theory §12).
+  // The volume average couples the stencils of a cell's averaged points (theory §12).
   for (std::size_t ci = 0; ci + 1 < union_start_.size(); ++ci)
     for (Index a = union_start_[ci]; a < union_start_[ci + 1]; ++a)
       neighbours[union_nodes_[a]].insert(neighbours[union_nodes_[a]].end(),
@@ -589,7 +591,7 @@ bool GridSystem::average_volume_change(const MaterialPoints& points, Index ci,
                                        const Eigen::Matrix<double, NS, Dim>& du,
                                        StencilOf&& stencil_of,
                                        AveragedVolumeChange<NS, Dim>& average) const {
-  // Eq. 12.1 and 12.4 over the cell's mixed points: volume ratios weighted by the start-of-step
+  // Eq. 12.1 and 12.4 over the cell's averaged points: volume ratios weighted by the start-of-step
   // volumes (so the cell's volume is kept exactly: sum_q v_q,n dJ^ = sum_q v_q), divergence
   // operators by the current ones. stencil_of(p): point p's weights over the rows of du.
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
@@ -598,7 +600,7 @@ bool GridSystem::average_volume_change(const MaterialPoints& points, Index ci,
   double start_volume = 0.0, volume = 0.0;
   average.divergence.setZero(1, n);
   for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
-    if (!is_mixed(points, p)) continue;
+    if (!is_averaged(points, p)) continue;
     double dJ = 1.0;
     if (!point_volume_change(stencil_of(p), start_state(points, p), du, axisymmetric, dJ,
                              divergence))
@@ -663,21 +665,18 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       [[maybe_unused]] MixedKernelResult<E::nodes, E::dim> rm;
       // Points with a wide stencil are assembled one by one below.
       const Index point_end = wide_stencil() ? cell_point_begin_[ci] : cell_point_end_[ci];
-      [[maybe_unused]] AveragedVolumeChange<nen, dim> average;
-      [[maybe_unused]] const AveragedVolumeChange<nen, dim>* cell_average = nullptr;
-      if constexpr (Mixed) {
-        if (settings_.mixed_volume_average && point_end > cell_point_begin_[ci]) {
-          if (!average_volume_change(
-                  points, ci, du_local, [&](Index q) { return cell_stencil<E>(q); }, average)) {
-            admissible = false;
-            continue;
-          }
-          cell_average = &average;
-        }
+      AveragedVolumeChange<nen, dim> average;
+      if (averaging_ && point_end > cell_point_begin_[ci] &&
+          !average_volume_change(
+              points, ci, du_local, [&](Index q) { return cell_stencil<E>(q); }, average)) {
+        admissible = false;
+        continue;
       }
       for (Index p = cell_point_begin_[ci]; p < point_end; ++p) {
         s = cell_stencil<E>(p);
         const PointStartState start = start_state(points, p);
+        const AveragedVolumeChange<nen, dim>* cell_average =
+            is_averaged(points, p) ? &average : nullptr;
         // The point's forces and stiffness by its formulation; then, shared, its prescribed-motion
         // spring and its state.
         const FiniteStrainState* state = &r.state;
@@ -705,11 +704,13 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
           }
         }
         if (!(Mixed && is_mixed(points, p))) {
-          ok = integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r);
+          ok = integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r,
+                               cell_average);
           if (ok) {
             f_cell.template head<n>() += r.internal_force;
             if (tangent) K_cell.template topLeftCorner<n, n>() += r.stiffness;
-            volume = own_volume = r.volume;
+            volume = r.state_volume;
+            own_volume = r.volume;
           }
         }
         if (!ok) {
@@ -858,12 +859,11 @@ template <int Dim>
 bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const Vector& du,
                                            Vector& f_int, SparseMatrix* tangent) {
   // Cell by cell, the points one after the other (their stencils overlap across cells of one
-  // colour). With the volume average (theory §12) the mixed points of a cell see the union of
+  // colour). With the volume average (theory §12) the averaged points of a cell see the union of
   // their stencils, their own weights padded with zeros, so that the average's rate and every
   // point's forces live on the same unknowns.
   using Dynamic = Stencil<Eigen::Dynamic, Dim>;
   const bool axisymmetric = settings_.kinematics == Kinematics::Axisymmetric;
-  const bool averaging = mixed_ && settings_.mixed_volume_average;
   Dynamic s;
   KernelResult<Eigen::Dynamic, Dim> r;
   MixedKernelResult<Eigen::Dynamic, Dim> rm;
@@ -899,7 +899,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
       for (int i = 0; i < Dim; ++i) du_local(a, i) = du(over[a] * Dim + i);
   };
   for (std::size_t ci = 0; ci < active_cells_.size(); ++ci) {
-    const bool cell_average = averaging && union_start_[ci + 1] > union_start_[ci];
+    const bool cell_average = averaging_ && union_start_[ci + 1] > union_start_[ci];
     if (cell_average) {
       cell_nodes.assign(union_nodes_.begin() + union_start_[ci],
                         union_nodes_.begin() + union_start_[ci + 1]);
@@ -916,7 +916,8 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
     }
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const bool mixed = is_mixed(points, p);
-      if (mixed && cell_average) {
+      const bool averaged = cell_average && is_averaged(points, p);
+      if (averaged) {
         nodes = cell_nodes;
       } else {
         nodes.assign(wide_nodes_.begin() + wide_start_[p],
@@ -934,7 +935,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         for (Index a = 0; a < ns; ++a)
           p_local(a) = pressure_start_(nodes[a]) + pressure_scale_ * du(pressure_dof(nodes[a]));
         if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
-                                   rm, cell_average ? &average : nullptr))
+                                   rm, averaged ? &average : nullptr))
           return false;
         const double s_p = pressure_scale_;
         f_local.resize(local);
@@ -945,7 +946,9 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         }
         commit(p, rm.u.state, rm.u.state_volume, rm.total_stress, rm.u.volume);
       } else {
-        if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r)) return false;
+        if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r,
+                             averaged ? &average : nullptr))
+          return false;
         f_local = r.internal_force;
         if (tangent) K_local = r.stiffness;
         commit(p, r.state, r.state_volume, r.state.cauchy_stress, r.volume);
@@ -976,8 +979,8 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
   return true;
 }
 
-void GridSystem::build_mixed_stencil_unions(const MaterialPoints& points) {
-  // Per active cell, the active nodes of the wide stencils of its mixed points, ascending: the
+void GridSystem::build_averaged_stencil_unions(const MaterialPoints& points) {
+  // Per active cell, the active nodes of the wide stencils of its averaged points, ascending: the
   // unknowns the cell's volume average couples (theory §12).
   union_start_.assign(active_cells_.size() + 1, 0);
   union_nodes_.clear();
@@ -985,7 +988,7 @@ void GridSystem::build_mixed_stencil_unions(const MaterialPoints& points) {
   for (std::size_t ci = 0; ci < active_cells_.size(); ++ci) {
     nodes.clear();
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
-      if (is_mixed(points, p))
+      if (is_averaged(points, p))
         nodes.insert(nodes.end(), wide_nodes_.begin() + wide_start_[p],
                      wide_nodes_.begin() + wide_start_[p + 1]);
     std::sort(nodes.begin(), nodes.end());

@@ -48,9 +48,11 @@ struct GridSettings {
   /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The
   /// system has pressure unknowns when any material is mixed.
   std::vector<char> mixed;
-  /// Mixed points see their cell's average volume change (F-bar, docs/theory.md §12), so that
-  /// their volumes cannot drift apart; false: each point its own.
-  bool mixed_volume_average = true;
+  /// Per material index: 1 if its points see the average volume change of their cell's averaged
+  /// points (F-bar, docs/theory.md §12) - mixed points so that their volumes cannot drift apart,
+  /// displacement points so that plastic flow keeps (or dilates) one volume per cell rather than
+  /// one per point; 0: each point its own.
+  std::vector<char> volume_average;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -167,7 +169,7 @@ class GridSystem {
   /// Point p's weights in its cell (standard MPM): shape values and reference gradients.
   template <class E>
   Stencil<E::nodes, E::dim> cell_stencil(Index p) const;
-  /// The volume change of the step averaged over the mixed points of active cell ci (F-bar,
+  /// The volume change of the step averaged over the averaged points of active cell ci (F-bar,
   /// docs/theory.md eq. 12.1), with stencil_of(p) point p's weights over the rows of du.
   template <int NS, int Dim, class StencilOf>
   bool average_volume_change(const MaterialPoints& points, Index ci,
@@ -186,6 +188,9 @@ class GridSystem {
   }
   bool is_mixed(const MaterialPoints& points, Index p) const {
     return mixed_ && settings_.mixed[points.material[p]];
+  }
+  bool is_averaged(const MaterialPoints& points, Index p) const {
+    return averaging_ && settings_.volume_average[points.material[p]];
   }
   template <class E>
   void convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
@@ -206,7 +211,7 @@ class GridSystem {
   void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
   template <class E>
   void build_dual_domain_stencils(const MaterialPoints& points);
-  void build_mixed_stencil_unions(const MaterialPoints& points);
+  void build_averaged_stencil_unions(const MaterialPoints& points);
   template <int Dim>
   bool wide_stencil_point_forces(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                  SparseMatrix* tangent);
@@ -252,8 +257,8 @@ class GridSystem {
   // spans [wide_start_[p], wide_start_[p + 1]).
   std::vector<Index> wide_start_, wide_nodes_;
   std::vector<double> wide_N_, wide_gradients_;
-  // With the volume average of mixed points: per active cell ci, the union of its mixed points'
-  // stencils (active ids, ascending) spans [union_start_[ci], union_start_[ci + 1]).
+  // With the volume average: per active cell ci, the union of its averaged points' stencils
+  // (active ids, ascending) spans [union_start_[ci], union_start_[ci + 1]).
   std::vector<Index> union_start_, union_nodes_;
 
   std::vector<double> target_stiffness_;  // per point; empty when no point has a target
@@ -266,6 +271,8 @@ class GridSystem {
 
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
   std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0
+
+  bool averaging_ = false;  // some material takes its cell's volume average (theory §12)
 
   // Mixed p-u (docs/theory.md §11).
   bool mixed_ = false;

@@ -58,11 +58,7 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   // a_bar = a + sigma_il delta_jk is the rate of tau / J, whose trace rows give the rate of the
   // material pressure. The mixed spatial tangent is
   //   a~_ijkl = a_bar_ijkl - 1/3 delta_ij a_bar_mmkl - p^ delta_ij delta_kl - sigma~_il delta_jk.
-  const auto A = out.u.state.spatial_tangent.template topLeftCorner<nc, nc>();
-  Eigen::Matrix<double, nc, nc> a_bar = A;
-  for (int c = 0; c < nc; ++c)
-    for (int d = 0; d < nc; ++d)
-      if (GC::col[c] == GC::row[d]) a_bar(c, d) += sigma(GC::row[c], GC::col[d]);
+  const ComponentMatrix<Dim> a_bar = material_part_of_tangent<Dim>(out.u.state);
   Eigen::Matrix<double, 1, nc> trace_rows = Eigen::Matrix<double, 1, nc>::Zero();
   Eigen::Matrix<double, 1, nc> identity = Eigen::Matrix<double, 1, nc>::Zero();
   for (int c = 0; c < nc; ++c)
@@ -85,25 +81,18 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   Eigen::Matrix<double, 1, n_dofs> dg = p_hat * div + (trace_rows * B) / 3.0;
 
   if (average) {
-    // F-bar (theory eqs. 12.5-12.6): the material sees dF^ = alpha dF on the grid's k = dim
-    // directions, alpha = (dJ^ / j)^(1/k), j their volume ratio, whose rate adds
-    // (1/k) (D^ - D_in) du to the scaled stretches (D_in the in-plane divergence), and the stress
-    // is scaled by j / dJ^ against the volume v of the forces:
-    //   d(v dev sigma)   += v [dev(a_bar : P_k) / k - dev sigma] (D^ - D_in) du
-    //   d(v p_mat)       -= v [tr(a_bar : P_k) / (3k) + p_mat] (D^ - D_in) du
-    // with a_bar : P_k the sum of a_bar's columns over the k scaled stretches.
-    constexpr int k = Dim;
-    Eigen::Matrix<double, nc, 1> scaled_columns = Eigen::Matrix<double, nc, 1>::Zero();
-    for (int d = 0; d < nc; ++d)
-      if (scaled_by_volume_average<Dim>(d)) scaled_columns += a_bar.col(d);
-    Eigen::Matrix<double, nc, 1> q = scaled_columns / k;
-    for (int c = 0; c < nc; ++c) q(c) -= sigma(GC::row[c], GC::col[c]);
+    // F-bar (theory eqs. 12.5-12.6): d(v sigma) += v q (D^ - D_in) du with q the
+    // volume_average_stress_rate; its deviator enters the equilibrium (the field carries the
+    // mean stress), and its trace the material pressure:
+    //   d(v dev sigma)   += v dev q (D^ - D_in) du
+    //   d(v p_mat)       -= v tr q / 3 (D^ - D_in) du
+    Eigen::Matrix<double, nc, 1> q = volume_average_stress_rate<Dim>(a_bar, sigma);
     const double q_trace = identity.dot(q);
     q -= (q_trace / 3.0) * identity.transpose();  // dev
     const Eigen::Matrix<double, 1, n_dofs> excess =
         average->divergence - divergence_operator<NS, Dim>(B, true);
     out.u.stiffness.noalias() += (v * (B.transpose() * q)) * excess;
-    dg += (identity.dot(scaled_columns) / (3.0 * k) + p_mat) * excess;
+    dg += (q_trace / 3.0) * excess;  // g holds -v p_mat
   }
   out.K_pu.noalias() = (v / bulk) * s.N * dg;
   out.K_pp.noalias() = (v / bulk) * s.N * s.N.transpose();

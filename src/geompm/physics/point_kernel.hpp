@@ -196,17 +196,56 @@ bool point_volume_change(const Stencil<NS, Dim>& s, const PointStartState& p,
   return true;
 }
 
+template <int Dim>
+using ComponentMatrix =
+    Eigen::Matrix<double, GradientComponents<Dim>::count, GradientComponents<Dim>::count>;
+
+/// The material part of the spatial tangent a (theory eq. 3.9), a_bar_ijkl = a_ijkl +
+/// sigma_il delta_jk: the rate of tau / J, whose trace rows give the rate of the material's
+/// pressure (eq. 11.3).
+template <int Dim>
+ComponentMatrix<Dim> material_part_of_tangent(const FiniteStrainState& state) {
+  using GC = GradientComponents<Dim>;
+  constexpr int nc = GC::count;
+  ComponentMatrix<Dim> a_bar = state.spatial_tangent.template topLeftCorner<nc, nc>();
+  for (int c = 0; c < nc; ++c)
+    for (int d = 0; d < nc; ++d)
+      if (GC::col[c] == GC::row[d]) a_bar(c, d) += state.cauchy_stress(GC::row[c], GC::col[d]);
+  return a_bar;
+}
+
+/// a_bar : P_k / k - sigma (theory eqs. 12.5-12.6): the rate of the stress of a point that sees
+/// its cell's volume change, v sigma(dF^) with v its own volume, per unit excess (D^ - D_p) du of
+/// the averaged over its own in-plane divergence. dF^ = alpha dF on the grid's k = dim directions,
+/// alpha = (dJ^ / j)^(1/k), so d alpha / alpha = (1/k) (D^ - D_p) du stretches the k normal
+/// components (P_k; a_bar : P_k the sum of a_bar's columns over them), and the stress is scaled by
+/// j / dJ^ against v: d(v sigma) += v (a_bar : P_k / k - sigma) (D^ - D_p) du.
+template <int Dim>
+Eigen::Matrix<double, GradientComponents<Dim>::count, 1> volume_average_stress_rate(
+    const ComponentMatrix<Dim>& a_bar, const Mat3& sigma) {
+  using GC = GradientComponents<Dim>;
+  constexpr int nc = GC::count;
+  Eigen::Matrix<double, nc, 1> rate = Eigen::Matrix<double, nc, 1>::Zero();
+  for (int d = 0; d < nc; ++d)
+    if (scaled_by_volume_average<Dim>(d)) rate += a_bar.col(d) / Dim;
+  for (int c = 0; c < nc; ++c) rate(c) -= sigma(GC::row[c], GC::col[c]);
+  return rate;
+}
+
 /// The displacement formulation at one point: internal force  v B^T sigma  (seed eq. 5) and
-/// tangent  v B^T a B  (seed eq. 10, theory eq. 3.9). du as in deform_point.
+/// tangent  v B^T a B  (seed eq. 10, theory eq. 3.9). With a cell's volume average (F-bar, theory
+/// §12) sigma is the material's at dF^ and the tangent gains v B^T q (D^ - D_p), q the
+/// volume_average_stress_rate (eq. 12.5). du as in deform_point.
 template <int NS, int Dim>
 bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
                      const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
-                     KernelResult<NS, Dim>& out) {
+                     KernelResult<NS, Dim>& out,
+                     const AveragedVolumeChange<NS, Dim>* average = nullptr) {
   using GC = GradientComponents<Dim>;
   constexpr int nc = GC::count;
   constexpr int n_dofs = KernelResult<NS, Dim>::n;
   GradientOperator<NS, Dim> B;
-  if (!deform_point(s, p, du, axisymmetric, want_tangent, out, B)) return false;
+  if (!deform_point(s, p, du, axisymmetric, want_tangent, out, B, average)) return false;
 
   Eigen::Matrix<double, nc, 1> sigma;
   for (int c = 0; c < nc; ++c) sigma(c) = out.state.cauchy_stress(GC::row[c], GC::col[c]);
@@ -217,6 +256,13 @@ bool integrate_point(const Stencil<NS, Dim>& s, const PointStartState& p,
         out.state.spatial_tangent.template topLeftCorner<nc, nc>();
     const Eigen::Matrix<double, nc, n_dofs> AB = A.lazyProduct(B);
     out.stiffness.noalias() = out.volume * B.transpose().lazyProduct(AB);
+    if (average) {
+      const Eigen::Matrix<double, nc, 1> q = volume_average_stress_rate<Dim>(
+          material_part_of_tangent<Dim>(out.state), out.state.cauchy_stress);
+      const Eigen::Matrix<double, 1, n_dofs> excess =
+          average->divergence - divergence_operator<NS, Dim>(B, true);
+      out.stiffness.noalias() += (out.volume * (B.transpose() * q)) * excess;
+    }
   }
   return true;
 }

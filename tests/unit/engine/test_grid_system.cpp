@@ -18,11 +18,13 @@
 namespace geompm {
 namespace {
 
-// A material for every point of the example, in the mixed formulation when `mixed`.
+// A material for every point of the example, in the mixed formulation when `mixed`, seeing its
+// cell's volume change when `volume_average` (F-bar, theory §12).
 struct MaterialChoice {
   std::string model;
   std::map<std::string, double> parameters;
   bool mixed = false;
+  bool volume_average = false;
 };
 
 /// Moves every point by up to `fraction` of its domain half-size along each axis (in the
@@ -60,7 +62,10 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
   settings.interpolation = interpolation;
-  if (choice) settings.mixed.assign(spec.materials.size(), choice->mixed);
+  if (choice) {
+    settings.mixed.assign(spec.materials.size(), choice->mixed);
+    settings.volume_average.assign(spec.materials.size(), choice->volume_average);
+  }
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   // Prescribed-motion springs on every fifth point (eq. 5.1), through the point's weights.
@@ -148,12 +153,16 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
 // Plastic flow and a non-zero pressure field in the mixed formulation: random increments of the
 // scaled pressure unknowns as large as the displacements give pressures of the order of the
 // stresses, so every block of eqs. 11.3-11.4 and the stabilisation (11.5) is exercised.
-const MaterialChoice mixed_tresca{
-    "tresca", {{"su", 5.0}, {"E", 1e4}, {"nu", 0.49}, {"density", 1.0}}, true};
-const MaterialChoice mixed_mohr_coulomb{
-    "mohr_coulomb",
-    {{"c", 2.0}, {"phi", 30.0}, {"psi", 10.0}, {"E", 1e4}, {"nu", 0.3}, {"density", 1.0}},
-    true};
+const std::map<std::string, double> tresca_parameters{
+    {"su", 5.0}, {"E", 1e4}, {"nu", 0.49}, {"density", 1.0}};
+const std::map<std::string, double> mohr_coulomb_parameters{
+    {"c", 2.0}, {"phi", 30.0}, {"psi", 10.0}, {"E", 1e4}, {"nu", 0.3}, {"density", 1.0}};
+const MaterialChoice mixed_tresca{"tresca", tresca_parameters, true, true};
+const MaterialChoice mixed_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, true, true};
+// The displacement formulation with the cell's volume change (formulation: f_bar): the tangent
+// gains eq. 12.5 with the whole stress rate q, not only its deviator.
+const MaterialChoice f_bar_tresca{"tresca", tresca_parameters, false, true};
+const MaterialChoice f_bar_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, false, true};
 
 TEST(GridSystemTangent, MixedTrescaPlaneStrain) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &mixed_tresca);
@@ -175,6 +184,30 @@ TEST(GridSystemTangent, MixedMohrCoulombGimp) {
 TEST(GridSystemTangent, MixedMohrCoulomb3D) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
                           &mixed_mohr_coulomb);
+}
+
+TEST(GridSystemTangent, FBarMohrCoulombPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
+                          &f_bar_mohr_coulomb);
+}
+TEST(GridSystemTangent, FBarTrescaAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
+                          &f_bar_tresca);
+}
+TEST(GridSystemTangent, FBarMohrCoulombDualDomain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain,
+                          &f_bar_mohr_coulomb);
+}
+TEST(GridSystemTangent, FBarTrescaGimp) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp, &f_bar_tresca);
+}
+TEST(GridSystemTangent, FBarMohrCoulomb3D) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
+                          &f_bar_mohr_coulomb);
+}
+TEST(GridSystemTangent, FBarRigidFootingRoughPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &f_bar_tresca,
+                          FootingChoice::Rough);
 }
 
 TEST(GridSystemTangent, RigidFootingSmoothPlaneStrain) {
@@ -221,12 +254,12 @@ TEST(GridSystemTangent, GimpThreeD) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Gimp);
 }
 
-// The cell-averaged volume change of mixed points (F-bar, docs/theory.md eqs. 12.1-12.3): after a
-// random increment every mixed point of a cell has changed volume by the same ratio, and the
-// cell's points together by exactly as much as without the average (sum_q v_q,n det dF_q),
-// while each point's domain keeps its own deformation; with `per_point` the ratios differ, so the
-// check can fail.
-void check_volume_average(const std::string& example, bool average) {
+// The cell-averaged volume change (F-bar, docs/theory.md eqs. 12.1-12.3), of mixed or displacement
+// points: after a random increment every point of a cell has changed volume by the same ratio,
+// and the cell's points together by exactly as much as without the average
+// (sum_q v_q,n det dF_q), while each point's domain keeps its own deformation; with `per_point`
+// the ratios differ, so the check can fail.
+void check_volume_average(const std::string& example, bool average, bool mixed = true) {
   auto spec = testing::read_example(example);
   for (auto& material : spec.materials) {
     material.model = mixed_tresca.model;
@@ -235,17 +268,19 @@ void check_volume_average(const std::string& example, bool average) {
   auto model = build_model(spec);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
-  settings.mixed.assign(spec.materials.size(), 1);
-  settings.mixed_volume_average = average;
+  settings.mixed.assign(spec.materials.size(), mixed);
+  settings.volume_average.assign(spec.materials.size(), average);
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Vector du = Vector::Zero(grid.num_dofs());
-  for (Index d = 0; d < grid.pressure_dof(0); ++d) du(d) = 2e-3 * u(rng);
+  const Index displacements =
+      static_cast<Index>(grid.active_nodes().size()) * static_cast<Index>(grid.dim());
+  for (Index d = 0; d < displacements; ++d) du(d) = 2e-3 * u(rng);
   MaterialPoints own = model->points, averaged = model->points;
-  settings.mixed_volume_average = false;
+  settings.volume_average.assign(spec.materials.size(), 0);
   GridSystem per_point(model->mesh, model->topology, model->material_pointers(), settings);
   per_point.initialise(own);
   ASSERT_TRUE(per_point.commit_state(own, du));
@@ -285,6 +320,10 @@ TEST(GridSystemVolumeAverage, PointsOfACellShareItsVolumeChange) {
 }
 TEST(GridSystemVolumeAverage, WithoutItEachPointKeepsItsOwn) {
   check_volume_average("oedometer/oedometer.yaml", false);
+}
+TEST(GridSystemVolumeAverage, DisplacementPointsShareItToo) {
+  check_volume_average("oedometer/oedometer.yaml", true, false);
+  check_volume_average("column/column_3d.yaml", true, false);
 }
 
 // DDMP gradients and GIMP weights reproduce a linear displacement field exactly: a uniform

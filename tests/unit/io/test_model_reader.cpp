@@ -206,6 +206,26 @@ TEST(ModelReader, ReadsTheMixedFormulationGloballyAndPerMaterial) {
   EXPECT_EQ(m.materials[0].parameters.count("formulation"), 0u);
 }
 
+TEST(ModelReader, ReadsTheFBarFormulationAndNamesTheChoices) {
+  const std::string text =
+      testing::apply(testing::kValidModel,
+                     {{"    density: 0.08\n", "    density: 0.08\n    formulation: f_bar\n"}});
+  EXPECT_EQ(read_model_from_string(text, "model.yaml").materials[0].formulation,
+            spec::Formulation::FBar);
+  const std::string wrong =
+      testing::apply(testing::kValidModel,
+                     {{"    density: 0.08\n", "    density: 0.08\n    formulation: fbar\n"}});
+  try {
+    read_model_from_string(wrong, "model.yaml");
+    ADD_FAILURE() << "an unknown formulation was accepted";
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("model.yaml"), std::string::npos) << message;
+    EXPECT_NE(message.find("f_bar"), std::string::npos) << message;
+    EXPECT_NE(message.find("fbar"), std::string::npos) << message;
+  }
+}
+
 TEST(ModelReader, FillsDefaultsOfAMinimalModel) {
   const spec::Model m = read_model_from_string(R"m(
 analysis: {kinematics: plane_strain}
