@@ -436,7 +436,7 @@ const std::vector<MalformedCase> kMalformedCases = {
      {{"buffer_layers: 2,", "buffer_layers: 2, formulation: up,"}},
      "buffer_layers:",
      "numerics.formulation",
-     "expected one of: displacement, mixed"},
+     "expected one of: displacement, f_bar, mixed"},
     {"material_formulation_not_a_choice",
      {{"    density: 0.08\n", "    density: 0.08\n    formulation: [mixed]\n"}},
      "formulation: [mixed]",
