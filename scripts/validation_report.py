@@ -673,8 +673,9 @@ def section_footing(args, work):
                 [(PRANDTL, "2 + π")], ylim=(0, 8))
     w("**F-bar: the displacement formulation with the cell's volume change** (`formulation: f_bar`, "
       "docs/theory.md §12; Coombs et al. 2018). Every soil point takes the mean volume change of its "
-      "cell, and there is no pressure unknown. It removes the locking too (rows F-bar above; ν = 0.49 / "
-      "0.4999): " + "; ".join(fbar_parts) + ". The issue's formulation is the mixed one; F-bar is "
+      "cell, and there is no pressure unknown. Where it runs to 0.1 B it removes the locking too, but "
+      "not every run gets there (rows F-bar above; ν = 0.49 / 0.4999): " + "; ".join(fbar_parts)
+      + ". The issue's formulation is the mixed one; F-bar is "
       "offered as the cheaper alternative (two unknowns a node instead of three) and is not asserted "
       "against the band.")
     w("")
