@@ -1686,8 +1686,27 @@ FOOTING_DISCUSSION_8 = (
     "0.02 B (row F-bar), Newton not converging at the smallest step, its relative residual wandering "
     "between 10⁻³ and 10⁻¹ with corrections as large as the step's, the largest out-of-balance "
     "forces at nodes under the footing about 2 B deep (x = 0.25–0.3 B, y = 3.0 m, in the graded "
-    "cells), not at its edge; on the N_q footing of §9 it stops at once. We have not found why "
-    "(docs/theory.md §12, end). Self-weight (N_γ) and surcharge (N_q) cases: §9.")
+    "cells), not at its edge; on the N_q footing of §9 it stops at once. *What stalls it* (measured "
+    "on this model, h = B/20, by hand; docs/theory.md §12, end): the tangent is consistent (a "
+    "directional finite difference of the residual along each Newton correction, ε = 10⁻⁶, differs "
+    "from it by 7·10⁻⁵ relative in the median and by less than 4·10⁻⁴ in 90 % of the run's 1276 "
+    "iterates with a relative residual above 10⁻³, 1–5·10⁻⁴ in the stalled step); the corrections, "
+    "up to 12 times the step's own increment, have the shape of an hourglass mode — horizontal "
+    "displacements alternating in sign from node to node along a vertical grid line (x = 0.2–0.25 B, "
+    "y = 3.2–4.0 m) — in a plastic zone that weightless c–φ soil develops down to about 2 B under "
+    "the footing (in both formulations: 660–685 plastic points at 0.01 B, in the same places). Our "
+    "reading, not proven: such a mode changes no cell's mean volume, which is all F-bar lets the "
+    "points' volumetric stiffness see, and the plastic points barely resist its shear, so the "
+    "tangent is nearly singular along it and each correction throws points between elastic and "
+    "plastic. No point is near the apex of the cone (mean stress at most 1.8 kPa in tension against "
+    "c cot φ = 2.75 kPa), so the candidate of the apex is ruled out. The dilatancy matters: with ψ = "
+    "0 the same F-bar run reaches 0.05 B (q/c = 12.24 against 12.99 with the displacement "
+    "formulation, ≤ 10 Newton iterations a step, 793 steps), with ψ = 10° it stops at 0.038 B (a "
+    "point's volume ≤ 0), with ψ = φ = 20° at 0.022 B; backtracking (`line_search: 6`) stops it "
+    "sooner (0.010 B). Forces from the reference volume and the Kirchhoff stress at F̄ (V₀ τ(F̄), "
+    "the variational form, with its own consistent tangent) instead of v σ(F̄) stop it at 0.013 B, "
+    "so that is not the cause either. The remedy is a stabilisation of the mode (hourglass control) "
+    "or a patch-wise average; not built yet. Self-weight (N_γ) and surcharge (N_q) cases: §9.")
 
 
 def section_cylinder(args, work):
