@@ -1105,6 +1105,7 @@ def section_footing(args, work):
                 "nonassoc": replace_once(mc_text, "psi: 20,", "psi: 0,"),
                 "assoc_coarse": strip_mesh(mc_text, 5),
                 "assoc_fine": strip_mesh(mc_text, 20),
+                "assoc_finest": strip_mesh(mc_text, 40),
                 "assoc_long": replace_once(mc_text, '"-0.05*t"', '"-0.1*t"'),
                 "assoc_mixed": replace_once(mc_text, "nu: 0.3, density: 0}",
                                             "nu: 0.3, density: 0, formulation: mixed}"),
@@ -1119,7 +1120,7 @@ def section_footing(args, work):
     w("")
     w("`examples/mohr_coulomb_footing/mohr_coulomb_footing.yaml`: smooth strip footing (the top row of "
       "soil points driven vertically), B = 1 m, c = 1 kPa, φ = 20°, E = 1000 c, ν = 0.3, weightless, "
-      "the strip's mesh (h = B/20, and B/10, B/40 for convergence), displacement formulation, pushed "
+      "the strip's mesh (h = B/20, and B/10, B/40, B/80 for convergence), displacement formulation, pushed "
       "to 0.05 B. Reference: Prandtl (1921) / Reissner (1924), "
       f"N_q = e^(π tan φ) tan²(45° + φ/2) = {Nq:.3f}, N_c = (N_q − 1) cot φ = {Nc:.2f} — exact for "
       "associated flow (ψ = φ); with ψ < φ the limit load is not unique and lies below it.")
@@ -1130,10 +1131,12 @@ def section_footing(args, work):
     labels = {"assoc": ("ψ = φ = 20°", "displacement", "B/20"), "nonassoc": ("ψ = 0, φ = 20°", "displacement", "B/20"),
               "assoc_coarse": ("ψ = φ = 20°", "displacement", "B/10"),
               "assoc_fine": ("ψ = φ = 20°", "displacement", "B/40"),
+              "assoc_finest": ("ψ = φ = 20°", "displacement", "B/80"),
               "assoc_mixed": ("ψ = φ = 20°", "mixed p–u", "B/20"),
               "assoc_fbar": ("ψ = φ = 20°", "F-bar", "B/20")}
     mc_q = {}
-    for key in ("assoc_coarse", "assoc", "assoc_fine", "nonassoc", "assoc_mixed", "assoc_fbar"):
+    for key in ("assoc_coarse", "assoc", "assoc_fine", "assoc_finest", "nonassoc", "assoc_mixed",
+                "assoc_fbar"):
         r = mc[key]
         lab, form, hh = labels[key]
         if r.h is None or len(r.h) < 2:
@@ -1153,25 +1156,45 @@ def section_footing(args, work):
     w("")
     plot_curves(os.path.join(FIGURES, "mohr_coulomb_footing.png"),
                 [(f"{labels[k][0]}, {labels[k][1]}, h = {labels[k][2]}", *mc[k].curve(S), s)
-                 for k, s in (("assoc_coarse", "C0:"), ("assoc", "C0--"), ("assoc_fine", "C0-"),
+                 for k, s in (("assoc_coarse", "C0:"), ("assoc", "C0--"), ("assoc_fine", "C0-."),
+                              ("assoc_finest", "C0-"),
                               ("nonassoc", "C1-"), ("assoc_mixed", "C2-"), ("assoc_fbar", "C3-"))
                  if mc[k].h is not None and len(mc[k].h) > 1],
                 "Smooth strip footing on c–φ soil (φ = 20°)", [(Nc, f"N_c = {Nc:.2f}")],
                 ylabel="q / c", ylim=(0, 1.5 * Nc))
     w("![Mohr-Coulomb footing](validation/mohr_coulomb_footing.png)")
     w("")
-    e = mc_q.get("assoc_fine", mc_q.get("assoc", float("nan"))) / Nc - 1
+    finest = next((k for k in ("assoc_finest", "assoc_fine", "assoc") if k in mc_q), None)
+    e = (mc_q[finest] if finest else float("nan")) / Nc - 1
     slopes = []
-    for key in ("assoc_coarse", "assoc", "assoc_fine"):
+    for key in ("assoc_coarse", "assoc", "assoc_fine", "assoc_finest"):
         if key in mc_q:
             r = mc[key]
             slopes.append((labels[key][2], (r.q_at(S, SM) - r.q_at(S, 0.04)) / 0.01))
     w(f"**Not reached** (target: within +5 % of N_c with associated flow, as for the Tresca strip). "
-      f"At 0.05 B the finest mesh is {e * 100:+.1f} % from N_c, but no curve has reached a plateau: "
+      f"At 0.05 B the finest mesh run there (h = {labels[finest][2] if finest else '—'}) is "
+      f"{e * 100:+.1f} % from N_c, but no curve has reached a plateau: "
       "between 0.04 and 0.05 B they still rise at "
       + ", ".join(f"{s:.0f} c/B (h = {hh})" for hh, s in slopes)
       + ", so the values at 0.05 B are not limit loads and the convergence with h at a fixed "
       "settlement is not a convergence of the bearing capacity.")
+    finest_run, fine_run = mc["assoc_finest"], mc["assoc_fine"]
+    if not finest_run.ok and finest_run.h is not None and len(finest_run.h) > 1:
+        x, q = finest_run.curve(S)
+        s_cmp = math.floor(x[-1] / 0.005) * 0.005
+        q_fine, q_finest = fine_run.q_at(S, s_cmp), float(np.interp(s_cmp, x, q))
+        last = x > x[-1] - 0.005
+        rise = np.polyfit(x[last], q[last], 1)[0]
+        w("")
+        w(f"On h = B/80 (80 cells under the footing's width, {finest_run.wall / 60:.0f} minutes on one "
+          f"thread) the run stops at {x[-1]:.4f} B ({stop_reason(finest_run)}) at q/c = {q[-1]:.2f} "
+          f"({(q[-1] / Nc - 1) * 100:+.1f} % from N_c), still rising at {rise:.0f} c/B over its last "
+          f"0.005 B. At {s_cmp:.3f} B it carries {q_finest:.2f} against {q_fine:.2f} on h = B/40 "
+          f"({(q_finest / q_fine - 1) * 100:+.1f} %): at that settlement N_c lies between the two "
+          "meshes' curves, the finer one below it, so the load at a fixed settlement keeps falling "
+          "with h past N_c and no limit load is measured; as for the Tresca strip at h = B/40 (§5), "
+          f"the points' quadrature after cell crossings (s/h = {s_cmp * 80:.1f} here) is the likely "
+          "cause.")
     long = mc["assoc_long"]
     if long.h is not None and len(long.h) > 1:
         x, q = long.curve(S)
