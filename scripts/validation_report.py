@@ -1172,7 +1172,7 @@ def section_footing(args, work):
             r = mc[key]
             slopes.append((labels[key][2], (r.q_at(S, SM) - r.q_at(S, 0.04)) / 0.01))
     w(f"**Not reached** (target: within +5 % of N_c with associated flow, as for the Tresca strip). "
-      f"At 0.05 B the finest mesh run there (h = {labels[finest][2] if finest else '—'}) is "
+      f"At 0.05 B the finest mesh that gets there (h = {labels[finest][2] if finest else '—'}) is "
       f"{e * 100:+.1f} % from N_c, but no curve has reached a plateau: "
       "between 0.04 and 0.05 B they still rise at "
       + ", ".join(f"{s:.0f} c/B (h = {hh})" for hh, s in slopes)
