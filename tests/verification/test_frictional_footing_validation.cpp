@@ -24,6 +24,7 @@
 #include "example_text.hpp"
 #include "geompm/core/error.hpp"
 #include "run_model.hpp"
+#include "strip_mesh.hpp"
 
 namespace geompm {
 namespace {
@@ -48,27 +49,7 @@ std::string model(const std::string& file, int n) {
   for (const char* push : {"\"-0.01*t\"", "\"-0.007*t\"", "\"-0.004*t\""})
     if (text.find(push) != std::string::npos)
       text = testing::replace_once(text, push, "\"-0.03*t\"");
-  if (n == 10) return text;
-  char buf[200];
-  std::snprintf(buf, sizeof buf,
-                "x: [{length: 1.0, cells: %d}, {length: 4.0, cells: %d, ratio: 4}]", 2 * n,
-                6 * n / 5);
-  text = testing::replace_once(
-      text, "x: [{length: 1.0, cells: 20}, {length: 4.0, cells: 12, ratio: 4}]", buf);
-  std::snprintf(buf, sizeof buf,
-                "y: [{length: 4.0, cells: %d, ratio: 0.25}, {length: 1.0, cells: %d}, "
-                "{length: 0.2, cells: %d}]",
-                6 * n / 5, 2 * n, std::max(2, 2 * n / 5));
-  text =
-      testing::replace_once(text,
-                            "y: [{length: 4.0, cells: 12, ratio: 0.25}, {length: 1.0, cells: 20}, "
-                            "{length: 0.2, cells: 4}]",
-                            buf);
-  std::snprintf(buf, sizeof buf, "%g]", 5 - 0.25 / n);  // the top row of soil points
-  for (const char* x : {"min: [0, ", "min: [0.5, "})
-    if (text.find(std::string(x) + "4.975]") != std::string::npos)
-      text = testing::replace_once(text, std::string(x) + "4.975]", x + std::string(buf));
-  return text;
+  return testing::strip_mesh(text, n);
 }
 
 // The push phase (time >= 1) of a run that may stop early: settlement / B since its start, and q

@@ -300,7 +300,9 @@ void check_volume_average(const std::string& example, bool average, bool mixed =
       without += own.volume[end];
     }
     largest_spread = std::max(largest_spread, high - low);
-    if (average) EXPECT_NEAR(with_average, without, 1e-12 * start);
+    if (average) {
+      EXPECT_NEAR(with_average, without, 1e-12 * start);
+    }
     // Each point's domain follows its own motion (eq. 12.7), not the averaged F^ its material
     // sees: the domain's deformation gradient is the one each point has without the average.
     for (Index q = p; q < end; ++q)
