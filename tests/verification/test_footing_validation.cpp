@@ -1,7 +1,8 @@
 // Footings against bearing-capacity theory (shared/validation/REFERENCES.md §3; docs/validation.md
-// §4-§8): the models of examples/strip_footing/ and examples/mohr_coulomb_footing/ on their own
-// mesh (10 cells under the footing's half-width, h = B/20), each run taking 2-30 s; the whole
-// file about a minute on one core. What is asserted, and why:
+// §4-§8): the models of examples/strip_footing/, circular_footing/ and mohr_coulomb_footing/ on
+// their own mesh (10 cells under the footing's half-width, h = B/20) and, for the rigid-plastic
+// limit, on h = B/10 and B/40 too; each run taking 2-40 s, the whole file about five minutes on
+// one core. What is asserted, and why:
 // - the mixed p-u answer does not depend on nu (0.49 against 0.4999, < 2 %, REFERENCES §3) and
 //   Newton stays at <= 10 iterations per step through plastic flow (issue 3);
 // - the displacement formulation locks at nu = 0.4999 (q/s_u far above Prandtl's 2 + pi) while
