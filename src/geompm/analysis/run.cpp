@@ -60,12 +60,14 @@ class OutputWriter {
         grid_series_(dir / "grid.pvd"),
         recorder_(model),
         history_(dir / "history.csv", recorder_.columns()),
-        newton_(dir / "newton.csv",
-                {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
-                 "converged", "largest_residual_node", "largest_residual_unknown"}) {}
+        newton_(dir / "newton.csv", {"step", "time", "dt", "iteration", "relative_residual",
+                                     "relative_correction", "converged", "largest_residual_node",
+                                     "largest_residual_unknown", "tangent_error"}) {}
 
   /// Every Newton attempt, converged or cut back: one row per iteration, with where the
-  /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation).
+  /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation) and,
+  /// with `newton.tangent_check`, the tangent's error along the correction that follows (0 when
+  /// the check is off or no correction followed).
   void newton_log(int step_number, double time, double dt, const StepResult& step) {
     const NewtonResult& newton = step.newton;
     for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
@@ -73,7 +75,8 @@ class OutputWriter {
           k < step.largest_residual.size() ? step.largest_residual[k] : UnknownAt{};
       newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
                       k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
-                      newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown)});
+                      newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
+                      k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0});
     }
   }
 

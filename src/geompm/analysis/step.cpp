@@ -354,6 +354,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
   settings.max_halvings = phase.spec->newton.line_search;
+  settings.tangent_check = phase.spec->newton.tangent_check;
   Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
   result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
   for (const Index dof : result.newton.largest)

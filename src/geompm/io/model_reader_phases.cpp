@@ -85,8 +85,8 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
 }
 
 spec::Newton read_newton(const yaml::Node& node) {
-  const yaml::Map section =
-      node.map({"max_iterations", "residual_tolerance", "displacement_tolerance", "line_search"});
+  const yaml::Map section = node.map({"max_iterations", "residual_tolerance",
+                                      "displacement_tolerance", "line_search", "tangent_check"});
   spec::Newton newton;
   if (auto iterations = section.find("max_iterations")) {
     newton.max_iterations = iterations->integer();
@@ -105,6 +105,14 @@ spec::Newton read_newton(const yaml::Node& node) {
           fmt::format("expected a whole number from 0 to 20 (the most halvings of a "
                       "correction), found {}",
                       newton.line_search));
+  }
+  if (auto check = section.find("tangent_check")) {
+    newton.tangent_check = check->number();
+    if (!(newton.tangent_check >= 0.0 && newton.tangent_check <= 0.1))
+      check->fail(
+          fmt::format("expected a finite-difference step from 0 (off) to 0.1, as a "
+                      "fraction of each Newton correction, found {}",
+                      newton.tangent_check));
   }
   return newton;
 }

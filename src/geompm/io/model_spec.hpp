@@ -170,6 +170,7 @@ struct Newton {
   double residual_tolerance = 1e-8;      // relative to the force scale
   double displacement_tolerance = 1e-8;  // relative to the step's displacement increment
   int line_search = 0;                   // halvings of an overshooting correction (0: none)
+  double tangent_check = 0.0;            // finite-difference step of the tangent check (0: off)
 };
 
 struct Dynamics {

@@ -36,6 +36,10 @@ struct NewtonSettings {
   /// Backtracking: a correction that makes the residual grow, or turns a point inside out, is
   /// halved, at most this many times in a row (0: plain Newton).
   int max_halvings = 0;
+  /// Diagnostic: if > 0, each correction dx is checked against the residual's directional
+  /// finite difference, (R(x + e dx) - R(x)) / e with e this value, which a consistent tangent
+  /// K = -dR/dx matches to O(e): K dx = R(x). Costs one more residual evaluation an iteration.
+  double tangent_check = 0.0;
 };
 
 struct NewtonResult {
@@ -45,7 +49,10 @@ struct NewtonResult {
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()
-  std::string failure;              // why it did not converge
+  /// With NewtonSettings::tangent_check, per correction: |(R(x + e dx) - R(x)) / e + R(x)| /
+  /// |R(x)|, the tangent's relative error along dx (NaN where x + e dx was inadmissible).
+  std::vector<double> tangent_errors;
+  std::string failure;  // why it did not converge
 };
 
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,

@@ -1,6 +1,7 @@
 // Newton's backtracking (docs/theory.md §4.4) on R(x) = -atan(x), the classic case where plain
 // Newton from |x0| > 1.39 overshoots further each iteration and diverges, while halving an
-// overshooting correction brings it into the quadratic basin around the root x = 0.
+// overshooting correction brings it into the quadratic basin around the root x = 0; and the
+// tangent check (newton.tangent_check), which must tell a consistent tangent from a wrong one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,17 +13,21 @@ namespace {
 
 class Arctangent final : public NonlinearProblem {
  public:
+  explicit Arctangent(double tangent_factor = 1.0) : tangent_factor_(tangent_factor) {}
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                 SparseMatrix* tangent) override {
     residual = Vector::Constant(1, -std::atan(x(0)));
     force_scale = 1.0;
     if (tangent) {
       *tangent = SparseMatrix(1, 1);
-      tangent->insert(0, 0) = 1.0 / (1.0 + x(0) * x(0));  // K = -dR/dx
+      tangent->insert(0, 0) = tangent_factor_ / (1.0 + x(0) * x(0));  // K = -dR/dx if factor 1
     }
     return true;
   }
   double increment_norm(const Vector& x) const override { return std::max(std::abs(x(0)), 1.0); }
+
+ private:
+  double tangent_factor_;
 };
 
 NewtonResult solve_from(double x0, int halvings, Vector& x) {
@@ -50,6 +55,40 @@ TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
   EXPECT_NEAR(x(0), 0.0, 1e-12);
   EXPECT_GT(result.halvings, 0);
   EXPECT_LT(result.iterations, 15);
+}
+
+NewtonResult solve_checked(double tangent_factor, Vector& x) {
+  Arctangent problem(tangent_factor);
+  auto solver = create_linear_solver("sparse_lu");
+  NewtonSettings settings;
+  settings.max_iterations = 60;
+  settings.residual_tolerance = 1e-10;
+  settings.displacement_tolerance = 1e-10;
+  settings.tangent_check = 1e-6;
+  x = Vector::Constant(1, 0.5);
+  SparseMatrix tangent;
+  return solve_newton(problem, *solver, settings, x, tangent);
+}
+
+TEST(NewtonTangentCheck, AConsistentTangentMatchesTheFiniteDifference) {
+  Vector x;
+  const NewtonResult result = solve_checked(1.0, x);
+  ASSERT_TRUE(result.converged) << result.failure;
+  ASSERT_EQ(result.tangent_errors.size(), static_cast<std::size_t>(result.iterations));
+  // Truncation O(e |R''/R'| |dx|) and round-off 1e-16 / e: below 1e-4 while |R| is not tiny.
+  EXPECT_LT(result.tangent_errors.front(), 1e-5);
+}
+
+TEST(NewtonTangentCheck, AWrongTangentIsReportedAndSlowsNewton) {
+  Vector x;
+  // A tangent 30 % too stiff: dR/dx along dx is off by 1 - 1/1.3 = 23 % (relative to R).
+  const NewtonResult result = solve_checked(1.3, x);
+  ASSERT_TRUE(result.converged) << result.failure;  // linear convergence, still to the root
+  EXPECT_NEAR(x(0), 0.0, 1e-9);
+  ASSERT_FALSE(result.tangent_errors.empty());
+  EXPECT_NEAR(result.tangent_errors.front(), 1.0 - 1.0 / 1.3, 1e-3);
+  const NewtonResult consistent = solve_checked(1.0, x);
+  EXPECT_GT(result.iterations, consistent.iterations);
 }
 
 }  // namespace

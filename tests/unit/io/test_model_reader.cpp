@@ -24,7 +24,8 @@ const std::string& column_model() {
       {{"growth: 1.5, cutback: 0.5, easy_iterations: 4",
         "growth: 1.25, cutback: 0.25, easy_iterations: 3"},
        {"newton: {max_iterations: 15, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}",
-        "newton: {max_iterations: 12, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-7}"},
+        "newton: {max_iterations: 12, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-7, "
+        "tangent_check: 1.0e-6}"},
        {"      - {boundary: bottom, fix: [x, y]}\n",
         "      - {boundary: bottom, fix: [x, y]}\n      - {boundary: right, fix: x}\n"},
        {"force: [\"0\", \"-10*t\"]", "force: [0, -10*t]"},
@@ -119,6 +120,7 @@ TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
   EXPECT_EQ(gravity.newton.max_iterations, 12);
   EXPECT_DOUBLE_EQ(gravity.newton.residual_tolerance, 1e-9);
   EXPECT_DOUBLE_EQ(gravity.newton.displacement_tolerance, 1e-7);
+  EXPECT_DOUBLE_EQ(gravity.newton.tangent_check, 1e-6);
   ASSERT_TRUE(gravity.gravity.has_value());
   EXPECT_EQ(gravity.gravity->acceleration, Vec3(0, -10, 0));
   EXPECT_TRUE(gravity.gravity->ramp);
