@@ -526,10 +526,17 @@ def plot_pressure(path, panels, base=4.9):
     plt.close(fig)
 
 
-def stop_reason(r):
-    """Why a run stopped early, in short."""
-    return ("a point's volume became ≤ 0" if "volume" in r.summary else
-            "Newton did not converge at the smallest step" if "converge" in r.summary else r.summary[:60])
+def stop_reason(r, detail=False):
+    """Why a run stopped early, in short; `detail`: with Newton's own words for a failed step."""
+    if "volume" in r.summary:
+        return "a point's volume became ≤ 0"
+    if "smallest allowed time step" in r.summary or "converge" in r.summary:
+        # "...the smallest allowed time step (dt): <Newton's failure>. Results up to ..."
+        reason = re.search(r"time step \([^)]*\): (.*?)\. Results up to", r.summary)
+        return "Newton did not converge at the smallest step" + (
+            " (" + re.sub(r" \((relative residual [^)]*)\)", r", \1", reason.group(1)) + ")"
+            if detail and reason else "")
+    return r.summary[:60]
 
 
 def stopped(r, scale):
@@ -537,17 +544,7 @@ def stopped(r, scale):
     if r.h is None or len(r.h) < 2:
         return f"failed: {r.summary[:80]}"
     x, q = r.curve(scale)
-    if "volume" in r.summary:
-        why = "a point's volume became ≤ 0"
-    elif "smallest allowed time step" in r.summary:
-        # "...the smallest allowed time step (dt): <Newton's failure>. Results up to ..."
-        reason = re.search(r"time step \([^)]*\): (.*?)\. Results up to", r.summary)
-        why = "Newton did not converge at the smallest step" + (
-            " (" + re.sub(r" \((relative residual [^)]*)\)", r", \1", reason.group(1)) + ")"
-            if reason else "")
-    else:
-        why = r.summary[:60]
-    return f"stopped at {x[-1]:.3f} B (q/s_u = {q[-1]:.2f}): {why}"
+    return f"stopped at {x[-1]:.3f} B (q/s_u = {q[-1]:.2f}): {stop_reason(r, detail=True)}"
 
 
 def verdict(ok):
