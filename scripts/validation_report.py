@@ -1971,17 +1971,17 @@ FOOTING_DISCUSSION_5_LIMIT = (
     "extrapolations of the end values fall below 2 + π; at the peak (column 0.0025 B) the averaged "
     "runs converge from above (rough 5.59 → 5.36 → 5.23). The fall grows as the settlement spans "
     "more of a cell (s/h = 0.05, 0.1, 0.2), and it is not the time step (the rough rigid footing on "
-    "h = B/20 with 80 and 160 steps instead of 40: the same curve within 0.1 %). Candidates are the "
-    "mode the average leaves free (volumes alternating from cell to cell, §4 (iv)) and the points' "
-    "quadrature as the points shift within their cells (the story of §5 before any crossing); we "
-    "have not traced it further. The examples keep `per_point` for the reason of §4 (iv): with "
-    "crossings, the average stopped the rigid runs before 0.1 B. The stiff clay's steps end in a "
-    "slowly converging tail (linear convergence near a relative residual of 10⁻⁸, the switch of §4 "
-    "(iv) that the tangent does not see), so the rigid footings' cap of 10 Newton iterations is "
-    "lifted to the steel block's 20 here (column Newton max); the smooth footing with the cap of 10 "
-    "stopped at 0.0041 B on h = B/40, level at 5.30 by then. Asserted in "
-    "`tests/verification/test_footing_validation.cpp` for the rigid footings on h = B/10 and B/20 "
-    "(levelled off, above 2 + π, falling with h, smooth ≤ rough).")
+    "h = B/20 with 80 and 160 steps instead of 40: the same curve within 0.1 %). Nor is it the "
+    "points' density: the steel block with 3×3 points per cell on h = B/20 falls the same (−1.1 % "
+    "from 0.0025 to 0.005 B, against −1.2 % with 2×2). The candidate left is the mode the average "
+    "leaves free (volumes alternating from cell to cell, §4 (iv)); we have not traced it further. "
+    "The examples keep `per_point` for the reason of §4 (iv): with crossings, the average stopped "
+    "the rigid runs before 0.1 B. The stiff clay's steps end in a slowly converging tail (linear "
+    "convergence near a relative residual of 10⁻⁸, the switch of §4 (iv) that the tangent does not "
+    "see), so the rigid footings' cap of 10 Newton iterations is lifted to the steel block's 20 here "
+    "(column Newton max); the smooth footing with the cap of 10 stopped at 0.0041 B on h = B/40, "
+    "level at 5.30 by then. Asserted in `tests/verification/test_footing_validation.cpp` for the "
+    "rigid footings on h = B/10 and B/20 (levelled off, above 2 + π, falling with h, smooth ≤ rough).")
 
 FOOTING_DISCUSSION_7_LIMIT = (
     "Before any crossing every circular footing levels off and converges to Cox, Eason & Hopkins' "
