@@ -1945,8 +1945,8 @@ FOOTING_DISCUSSION_4_PRESSURE_LIMIT = (
     "(middle panel), where the mechanism is singular; with the cell average of the steel block it is "
     "smooth (C = 0.02, right panel). The points' pressure is smooth in every run (C ≈ 0.01–0.02). "
     "**Reached before crossings** with the cell-averaged volume change, for every footing: the "
-    "per-point formulation lets the points' volumes drift (§5, the rigid-plastic limit), most at the "
-    "edge, and the oscillation at 0.1 B comes with the crossings. **Not reached at 0.1 B** (above).")
+    "per-point formulation lets the points' volumes drift (§5, the rigid-plastic limit), and the "
+    "oscillation at 0.1 B comes with the crossings. **Not reached at 0.1 B** (above).")
 
 FOOTING_DISCUSSION_5_LIMIT = (
     "What this separates. Before any crossing the rigid footings level off on every mesh, at a limit "
