@@ -5,12 +5,15 @@
 //   N_q = e^(pi tan phi) tan^2(45 + phi/2) = 18.40: at h = B/20 and B/10 the over-estimate that
 //   docs/validation.md §9 measured, falling with h; at h = B/40 the load levels off within the
 //   accuracy reached there; at h = B/80 it is within +5 % of N_q (the target).
+//   In the rigid-plastic limit (stiff sand, no point crossing a cell) the over-estimate falls
+//   with h from above and the Richardson extrapolation lands within 3 % of N_q.
 // - N_gamma (self-weight, rough steel block and smooth top row of points) against Martin (2005):
 //   what the runs reach is asserted (the rough footing's load climbs past the exact 14.75 without
 //   levelling off, falling with h at a fixed settlement; the smooth one stops early, above 7.65);
 //   N_gamma itself is reported as not reached (§9).
 // The runs stop before the end of their push (a point's volume <= 0, or Newton at the smallest
-// step, §9): the histories up to there are used. Each test takes 5-40 s on one core.
+// step, §9): the histories up to there are used. Each test takes 5-50 s on one core, the
+// h = B/80 one about four minutes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +23,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "example_text.hpp"
 #include "geompm/core/error.hpp"
@@ -142,6 +146,39 @@ TEST(FrictionalFootingValidation, SurchargeNqWithinFivePercentOfPrandtlReissnerA
   // At its limit load: over the last 0.0005 B of the push the load moves by less than 1 %.
   EXPECT_LT(std::abs(finest.q.back() - finest.at(finest.s.back() - 0.0005)),
             0.01 * finest.q.back());
+}
+
+TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPrandtlReissner) {
+  // N_q is the limit load of a rigid-plastic soil. The example's sand made stiff (E = 1e5 q0
+  // instead of 5000 q0) and pushed 0.0015 B forms its mechanism before the second row of points
+  // under the footing crosses its cell (docs/validation.md §9, N_q in the rigid-plastic limit).
+  // Measured at 0.0015 B on h = B/10, B/20, B/40: 24.26, 21.47, 20.02 (+32, +17, +9 %), order 0.94,
+  // Richardson extrapolation 18.42.
+  std::vector<double> q;
+  for (int n : {5, 10, 20}) {
+    auto text = testing::replace_once(
+        testing::replace_once(
+            testing::example_text("frictional_footing/frictional_footing_nq.yaml"),
+            "vtk: {every: 10}", "vtk: {every: 0}"),
+        "E: 5000,", "E: 100000,");
+    text = testing::strip_mesh(testing::replace_once(text, "\"-0.01*t\"", "\"-0.0015*t\""), n);
+    const auto push = run_push(text, "nq_stiff_" + std::to_string(n), kSurchargeScale);
+    ASSERT_FALSE(push.stopped) << "h = B/" << 2 * n;
+    ASSERT_NEAR(push.s.back(), 0.0015, 1e-6);
+    q.push_back(push.q.back() - kCohesionShare);
+    std::printf("[N_q, E = 1e5 q0, h = B/%d] %.2f at 0.0015 B (%+.1f %%)\n", 2 * n, q.back(),
+                (q.back() / kNq - 1) * 100);
+    EXPECT_GT(q.back(), kNq);  // associated flow on low-order cells: an upper bound
+  }
+  EXPECT_LT(q[1], q[0]);
+  EXPECT_LT(q[2], q[1]);
+  const double order = std::log2((q[0] - q[1]) / (q[1] - q[2]));
+  const double extrapolated = q[2] - (q[1] - q[2]) / (std::pow(2.0, order) - 1.0);
+  std::printf("[N_q, rigid-plastic limit] order %.2f, extrapolated %.2f (%+.1f %% of N_q)\n", order,
+              extrapolated, (extrapolated / kNq - 1) * 100);
+  EXPECT_GT(order, 0.5);
+  EXPECT_LT(order, 1.5);
+  EXPECT_NEAR(extrapolated / kNq, 1.0, 0.03);
 }
 
 TEST(FrictionalFootingValidation, SelfWeightNgammaIsOverEstimatedWithoutALimitLoad) {
