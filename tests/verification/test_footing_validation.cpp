@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "example_text.hpp"
+#include "richardson.hpp"
 #include "run_model.hpp"
 #include "strip_mesh.hpp"
 
@@ -338,8 +339,7 @@ TEST(MohrCoulombFootingValidation, RigidPlasticLimitConvergesToPrandtlReissnerNc
   EXPECT_LT(q[2], q[1]);
   EXPECT_LT(q[1], q[0]);
   // Richardson extrapolation h -> 0 with the observed order (measured 0.91 and 14.78, -0.3 %).
-  const double order = std::log2((q[0] - q[1]) / (q[1] - q[2]));
-  const double extrapolated = q[2] - (q[1] - q[2]) / (std::pow(2.0, order) - 1.0);
+  const auto [order, extrapolated] = testing::richardson(q[0], q[1], q[2]);
   std::printf(
       "[Mohr-Coulomb strip, rigid-plastic limit] order %.2f, extrapolated q/c = %.3f "
       "(%+.1f %% of N_c = %.3f)\n",

@@ -27,6 +27,7 @@
 
 #include "example_text.hpp"
 #include "geompm/core/error.hpp"
+#include "richardson.hpp"
 #include "run_model.hpp"
 #include "strip_mesh.hpp"
 
@@ -172,8 +173,7 @@ TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPr
   }
   EXPECT_LT(q[1], q[0]);
   EXPECT_LT(q[2], q[1]);
-  const double order = std::log2((q[0] - q[1]) / (q[1] - q[2]));
-  const double extrapolated = q[2] - (q[1] - q[2]) / (std::pow(2.0, order) - 1.0);
+  const auto [order, extrapolated] = testing::richardson(q[0], q[1], q[2]);
   std::printf("[N_q, rigid-plastic limit] order %.2f, extrapolated %.2f (%+.1f %% of N_q)\n", order,
               extrapolated, (extrapolated / kNq - 1) * 100);
   EXPECT_GT(order, 0.5);
