@@ -1276,18 +1276,34 @@ def section_footing(args, work):
     return lines
 
 
-def limit_load_header(lead, quantity, end, last):
-    """The header of a rigid-plastic-limit table: `lead` columns, then q at four settlements."""
+def convergence_line(label, qs, reference, end, length, finest):
+    """A bullet: q at the end of the push on meshes halving h (the last h = length / finest),
+    their errors against `reference`, the observed order and the Richardson extrapolation."""
+    extrapolated = richardson(qs)
+    e = qs[-1] / reference - 1
+    return (f"- {label}: q/s_u at {end:g} {length} = " + " → ".join(f"{v:.3f}" for v in qs) + " ("
+            + " → ".join(f"{(v / reference - 1) * 100:+.1f} %" for v in qs) + f" from {reference:.2f})"
+            + (f", observed order {extrapolated[0]:.2f}, Richardson extrapolation h → 0: "
+               f"{extrapolated[1]:.3f} ({(extrapolated[1] / reference - 1) * 100:+.1f} %)"
+               if extrapolated else ", not monotonic in h")
+            + f"; h = {length}/{finest} {'within' if 0 <= e <= 0.05 else 'outside'} +5 %.")
+
+
+def limit_load_header(lead, quantity, end, last, length="B"):
+    """The header of a rigid-plastic-limit table: `lead` columns, then q at four settlements
+    (fractions of the footing's width or diameter, `length`)."""
     columns = lead.count("|") - 1
-    return (f"{lead} {quantity} at {end / 4:g} B | {end / 2:g} B | {end - last:g} B | {end:g} B | "
-            f"change over the last {last:g} B | error at {end:g} B | steps | Newton max / mean | "
-            "wall time |\n" + "|---" * (columns + 9) + "|")
+    L = length
+    return (f"{lead} {quantity} at {end / 4:g} {L} | {end / 2:g} {L} | {end - last:g} {L} | "
+            f"{end:g} {L} | change over the last {last:g} {L} | error at {end:g} {L} | steps | "
+            "Newton max / mean | wall time |\n" + "|---" * (columns + 9) + "|")
 
 
-def limit_load_cells(r, scale, end, last, reference, digits):
+def limit_load_cells(r, scale, end, last, reference, digits, length="B"):
     """(q at the end of the push or None, the row's cells after its lead columns)."""
     if not r.ok:
-        return None, f"{stopped(r, scale)} | | | | | | | | {r.wall:.0f} s"
+        why = stopped(r, scale).replace(" B ", f" {length} ")
+        return None, f"{why} | | | | | | | | {r.wall:.0f} s"
     q = [r.q_at(scale, x) for x in (end / 4, end / 2, end - last, end)]
     itmax, itmean = r.iterations()
     return q[-1], (" | ".join(f"{v:.{digits}f}" for v in q)
@@ -1327,28 +1343,22 @@ def tresca_rigid_plastic_limit(runner, prefix, files, references, scale, length,
                          for n in levels})
     w(intro)
     w("")
-    w(limit_load_header("| footing | h |", "q/s_u", end, last).replace(" B |", f" {length} |"))
+    w(limit_load_header("| footing | h |", "q/s_u", end, last, length))
     q_end = {}
     for k in KINDS:
         for n in levels:
-            q, cells = limit_load_cells(runs[f"{prefix}_{k}_{n}"], scale, end, last, references[k], 3)
+            q, cells = limit_load_cells(runs[f"{prefix}_{k}_{n}"], scale, end, last, references[k], 3,
+                                        length)
             if q is not None:
                 q_end[(k, n)] = q
-            w(f"| {LABEL[k]} | {length}/{2 * n} | {cells.replace(' B', ' ' + length)} |")
+            w(f"| {LABEL[k]} | {length}/{2 * n} | {cells} |")
     w("")
     for k in KINDS:
         if not all((k, n) in q_end for n in levels):
             w(f"- {LABEL[k]}: not every mesh finished (table).")
             continue
-        qs = [q_end[(k, n)] for n in levels]
-        extrapolated = richardson(qs)
-        e = qs[-1] / references[k] - 1
-        w(f"- {LABEL[k]}: q/s_u at {end:g} {length} = " + " → ".join(f"{v:.3f}" for v in qs) + " ("
-          + " → ".join(f"{(v / references[k] - 1) * 100:+.1f} %" for v in qs) + f" from {references[k]:.2f})"
-          + (f", observed order {extrapolated[0]:.2f}, Richardson extrapolation h → 0: "
-             f"{extrapolated[1]:.3f} ({(extrapolated[1] / references[k] - 1) * 100:+.1f} %)"
-             if extrapolated else ", not monotonic in h")
-          + f"; h = {length}/{2 * levels[-1]} {'within' if 0 <= e <= 0.05 else 'outside'} +5 %.")
+        w(convergence_line(LABEL[k], [q_end[(k, n)] for n in levels], references[k], end, length,
+                           2 * levels[-1]))
     w("")
     pairs = [(n, q_end[("smooth", n)], q_end[("rigid", n)]) for n in levels
              if ("smooth", n) in q_end and ("rigid", n) in q_end]
@@ -1364,27 +1374,25 @@ def tresca_rigid_plastic_limit(runner, prefix, files, references, scale, length,
           "(`mixed_volume: cell_average`, docs/theory.md §12) instead of each point's own "
           "(`per_point`, their examples' setting, §4 (iv)):")
         w("")
-        w(limit_load_header("| footing | h |", "q/s_u", end, last).replace(" B |", f" {length} |"))
+        w(limit_load_header("| footing | h |", "q/s_u", end, last, length))
+        runs_avg = runner.batch({
+            f"{prefix}_{k}_avg_{n}": replace_once(tresca_limit_text(files[k], n),
+                                                  "mixed_volume: per_point",
+                                                  "mixed_volume: cell_average")
+            for k in ("smooth", "rigid") for n in levels})
         q_avg = {}
         for k in ("smooth", "rigid"):
             for n in levels:
-                t = replace_once(tresca_limit_text(files[k], n), "mixed_volume: per_point",
-                                 "mixed_volume: cell_average")
-                q, cells = limit_load_cells(runner.batch({"avg": t})["avg"], scale, end, last,
-                                            references[k], 3)
+                q, cells = limit_load_cells(runs_avg[f"{prefix}_{k}_avg_{n}"], scale, end, last,
+                                            references[k], 3, length)
                 if q is not None:
                     q_avg[(k, n)] = q
                 w(f"| {LABEL[k]}, cell average | {length}/{2 * n} | {cells} |")
         w("")
         for k in ("smooth", "rigid"):
             if all((k, n) in q_avg for n in levels):
-                qs = [q_avg[(k, n)] for n in levels]
-                extrapolated = richardson(qs)
-                w(f"- {LABEL[k]}, cell average: " + " → ".join(
-                    f"{(v / references[k] - 1) * 100:+.1f} %" for v in qs)
-                  + (f", observed order {extrapolated[0]:.2f}, Richardson extrapolation "
-                     f"{extrapolated[1]:.3f} ({(extrapolated[1] / references[k] - 1) * 100:+.1f} %)"
-                     if extrapolated else ""))
+                w(convergence_line(f"{LABEL[k]}, cell average", [q_avg[(k, n)] for n in levels],
+                                   references[k], end, length, 2 * levels[-1]))
         w("")
     w(discussion)
     w("")
