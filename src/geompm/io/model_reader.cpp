@@ -163,7 +163,7 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 spec::Numerics read_numerics(const yaml::Node& node) {
   const yaml::Map section =
       node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
-                "lost_points", "linear_solver", "mixed_volume"});
+                "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -187,6 +187,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
                                : spec::LostPointPolicy::Stop;
   if (auto volume = section.find("mixed_volume"))
     numerics.mixed_volume_average = volume->choice({"cell_average", "per_point"}) == "cell_average";
+  if (auto pressure = section.find("mixed_material_pressure"))
+    numerics.mixed_field_pressure = pressure->choice({"own", "field"}) == "field";
   if (auto solver = section.find("linear_solver"))
     numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
   return numerics;

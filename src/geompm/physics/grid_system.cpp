@@ -685,8 +685,9 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         bool ok = false;
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
-            ok = integrate_mixed_point(s, start, du_local, p_local, axisymmetric,
-                                       tangent != nullptr, rm, cell_average);
+            ok =
+                integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
+                                      rm, cell_average, settings_.mixed_field_pressure);
             if (ok) {
               f_cell.template head<n>() += rm.u.internal_force;
               f_cell.template tail<nen>() += s_p * rm.pressure_residual;
@@ -935,7 +936,8 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         for (Index a = 0; a < ns; ++a)
           p_local(a) = pressure_start_(nodes[a]) + pressure_scale_ * du(pressure_dof(nodes[a]));
         if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
-                                   rm, averaged ? &average : nullptr))
+                                   rm, averaged ? &average : nullptr,
+                                   settings_.mixed_field_pressure))
           return false;
         const double s_p = pressure_scale_;
         f_local.resize(local);

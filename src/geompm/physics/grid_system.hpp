@@ -53,6 +53,9 @@ struct GridSettings {
   /// displacement points so that plastic flow keeps (or dilates) one volume per cell rather than
   /// one per point; 0: each point its own.
   std::vector<char> volume_average;
+  /// Mixed points evaluate their material at the volume whose pressure is the field's
+  /// (docs/theory.md §14) rather than at their kinematic volume.
+  bool mixed_field_pressure = false;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in

@@ -25,6 +25,7 @@ struct MaterialChoice {
   std::map<std::string, double> parameters;
   bool mixed = false;
   bool volume_average = false;
+  bool field_pressure = false;  // the material at the field's pressure (theory §14)
 };
 
 /// Moves every point by up to `fraction` of its domain half-size along each axis (in the
@@ -65,6 +66,7 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   if (choice) {
     settings.mixed.assign(spec.materials.size(), choice->mixed);
     settings.volume_average.assign(spec.materials.size(), choice->volume_average);
+    settings.mixed_field_pressure = choice->field_pressure;
   }
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
@@ -159,6 +161,13 @@ const std::map<std::string, double> mohr_coulomb_parameters{
     {"c", 2.0}, {"phi", 30.0}, {"psi", 10.0}, {"E", 1e4}, {"nu", 0.3}, {"density", 1.0}};
 const MaterialChoice mixed_tresca{"tresca", tresca_parameters, true, true};
 const MaterialChoice mixed_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, true, true};
+// The material evaluated at the field's pressure (theory eqs. 14.1-14.3), with the cell's or each
+// point's own volume change: the solved volume's rate enters every block.
+const MaterialChoice field_pressure_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, true,
+                                                 true, true};
+const MaterialChoice field_pressure_own_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, true,
+                                                     false, true};
+const MaterialChoice field_pressure_tresca{"tresca", tresca_parameters, true, false, true};
 // The displacement formulation with the cell's volume change (formulation: f_bar): the tangent
 // gains eq. 12.5 with the whole stress rate q, not only its deviator.
 const MaterialChoice f_bar_tresca{"tresca", tresca_parameters, false, true};
@@ -186,6 +195,26 @@ TEST(GridSystemTangent, MixedMohrCoulomb3D) {
                           &mixed_mohr_coulomb);
 }
 
+TEST(GridSystemTangent, FieldPressureMohrCoulombPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
+                          &field_pressure_mohr_coulomb);
+}
+TEST(GridSystemTangent, FieldPressureOwnVolumeMohrCoulombPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
+                          &field_pressure_own_mohr_coulomb);
+}
+TEST(GridSystemTangent, FieldPressureMohrCoulombGimp) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp,
+                          &field_pressure_mohr_coulomb);
+}
+TEST(GridSystemTangent, FieldPressureTrescaAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
+                          &field_pressure_tresca);
+}
+TEST(GridSystemTangent, FieldPressureMohrCoulomb3D) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
+                          &field_pressure_mohr_coulomb);
+}
 TEST(GridSystemTangent, FBarMohrCoulombPlaneStrain) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
                           &f_bar_mohr_coulomb);

@@ -58,14 +58,18 @@ output:
 )m";
 
 TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
-  std::string text = kLoadingModel + "numerics: {mixed_volume: per_point}\n";
+  std::string text =
+      kLoadingModel + "numerics: {mixed_volume: per_point, mixed_material_pressure: field}\n";
   const std::string step = "    time_step: 0.1\n";
   text.replace(text.find(step), step.size(), step + "    newton: {line_search: 4}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_FALSE(model.numerics.mixed_volume_average);
+  EXPECT_TRUE(model.numerics.mixed_field_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
-  EXPECT_TRUE(read_model_from_string(kLoadingModel, "model.yaml").numerics.mixed_volume_average);
+  const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
+  EXPECT_TRUE(defaults.numerics.mixed_volume_average);
+  EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -330,6 +334,13 @@ const std::vector<LoadingCase> kLoadingCases = {
      "mixed_volume: averaged",
      "numerics.mixed_volume",
      "cell_average"},
+    {"mixed_material_pressure_unknown",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {mixed_material_pressure: projected}\n"}},
+     "mixed_material_pressure: projected",
+     "numerics.mixed_material_pressure",
+     "field"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
