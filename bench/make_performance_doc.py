@@ -374,10 +374,13 @@ def main():
           "ν = 0.49): one pressure unknown more per node, the kernel's pressure blocks and "
           "the cell's pressure stabilisation; with the cell-averaged volume change (F-bar, §12, "
           "the default) every mixed point's dF and B are also computed once more, for its "
-          "cell's average, and the tangent gains the average's coupling terms. Medians, ms; "
-          "× = against the displacement formulation at the same size.\n")
+          "cell's average, and the tangent gains the average's coupling terms. At the field's "
+          "pressure (`mixed_material_pressure: field`, §14, with the cell average) each point's "
+          "material is updated once per iteration of its volume solve (eq. 14.1). "
+          "Medians, ms; × = against the displacement formulation at the same size.\n")
         variants = [("displacement", ""), ("mixed, per point", "#mixed_per_point"),
-                    ("mixed, cell average", "#mixed_cell_average")]
+                    ("mixed, cell average", "#mixed_cell_average"),
+                    ("mixed, at the field's pressure", "#mixed_field_pressure")]
         w("| size | formulation | free unknowns | tangent non-zeros | internal force (1 thread) "
           "| factorise + solve | whole step | Newton iterations |")
         w("|---|---|---|---|---|---|---|---|")

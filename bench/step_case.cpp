@@ -18,6 +18,8 @@ const char* formulation_name(Formulation f) {
       return "mixed_per_point";
     case Formulation::MixedCellAverage:
       return "mixed_cell_average";
+    case Formulation::MixedFieldPressure:
+      return "mixed_field_pressure";
   }
   return "";
 }
@@ -41,7 +43,9 @@ spec::Model block_under_gravity(int cells, Formulation formulation) {
                              {{"E", 1e5}, {"nu", mixed ? 0.49 : 0.3}, {"density", 2.0}},
                              mixed ? spec::Formulation::Mixed : spec::Formulation::Displacement,
                              {}});
-  model.numerics.mixed_volume_average = formulation == Formulation::MixedCellAverage;
+  model.numerics.mixed_volume_average = formulation == Formulation::MixedCellAverage ||
+                                        formulation == Formulation::MixedFieldPressure;
+  model.numerics.mixed_field_pressure = formulation == Formulation::MixedFieldPressure;
 
   spec::Body body;
   body.name = "block";

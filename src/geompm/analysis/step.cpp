@@ -361,6 +361,15 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   for (const Index dof : result.newton.largest)
     result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
   if (!result.newton.converged) {
+    if (const Index p = grid_.inadmissible_point();
+        result.newton.inadmissible && p >= 0 && p < points.size()) {
+      const Vec3& x = points.position[p];
+      result.newton.failure +=
+          grid_.dim() == 3
+              ? fmt::format("; material point {} at ({:.4g}, {:.4g}, {:.4g})", points.id[p], x.x(),
+                            x.y(), x.z())
+              : fmt::format("; material point {} at ({:.4g}, {:.4g})", points.id[p], x.x(), x.y());
+    }
     if (problem.largest_residual_unknown() >= 0)
       result.newton.failure +=
           "; " + out_of_balance(grid_, model_.mesh, problem.largest_residual_unknown(),

@@ -492,8 +492,14 @@ PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) c
           points.internal[p]};
 }
 
+void GridSystem::note_inadmissible(Index p) {
+#pragma omp critical(geompm_inadmissible_point)
+  if (inadmissible_point_ < 0 || p < inadmissible_point_) inadmissible_point_ = p;
+}
+
 bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                                 SparseMatrix* tangent) {
+  inadmissible_point_ = -1;
   return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
     using E = decltype(e);
     return mixed_ ? internal_force_typed<E, true>(points, du, f_int, tangent)
@@ -669,6 +675,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       if (averaging_ && point_end > cell_point_begin_[ci] &&
           !average_volume_change(
               points, ci, du_local, [&](Index q) { return cell_stencil<E>(q); }, average)) {
+        note_inadmissible(cell_point_begin_[ci]);
         admissible = false;
         continue;
       }
@@ -715,6 +722,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
           }
         }
         if (!ok) {
+          note_inadmissible(p);
           admissible = false;
           continue;
         }
@@ -912,8 +920,10 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
                 fill_stencil(q, cell_nodes, padded);
                 return padded;
               },
-              average))
+              average)) {
+        note_inadmissible(cell_point_begin_[ci]);
         return false;
+      }
     }
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const bool mixed = is_mixed(points, p);
@@ -937,8 +947,10 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
           p_local(a) = pressure_start_(nodes[a]) + pressure_scale_ * du(pressure_dof(nodes[a]));
         if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
                                    rm, averaged ? &average : nullptr,
-                                   settings_.mixed_field_pressure))
+                                   settings_.mixed_field_pressure)) {
+          note_inadmissible(p);
           return false;
+        }
         const double s_p = pressure_scale_;
         f_local.resize(local);
         f_local << rm.u.internal_force, s_p * rm.pressure_residual;
@@ -949,8 +961,10 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
         commit(p, rm.u.state, rm.u.state_volume, rm.total_stress, rm.u.volume);
       } else {
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r,
-                             averaged ? &average : nullptr))
+                             averaged ? &average : nullptr)) {
+          note_inadmissible(p);
           return false;
+        }
         f_local = r.internal_force;
         if (tangent) K_local = r.stiffness;
         commit(p, r.state, r.state_volume, r.state.cauchy_stress, r.volume);

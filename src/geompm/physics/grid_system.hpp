@@ -110,6 +110,9 @@ class GridSystem {
   /// point's trial state for convect(). False if a point's deformation is inadmissible.
   bool internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
                       SparseMatrix* tangent);
+  /// After internal_force returned false: the (lowest-numbered) point whose deformation was
+  /// inadmissible, or -1 (for the failure message).
+  Index inadmissible_point() const { return inadmissible_point_; }
 
   /// Writes into `points` the state the internal force computes at `du` (stress, F, b_e,
   /// internal variables, volume): one more evaluation, without the tangent, instead of keeping
@@ -275,7 +278,9 @@ class GridSystem {
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
   std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0
 
-  bool averaging_ = false;  // some material takes its cell's volume average (theory §12)
+  bool averaging_ = false;         // some material takes its cell's volume average (theory §12)
+  Index inadmissible_point_ = -1;  // see inadmissible_point()
+  void note_inadmissible(Index p);
 
   // Mixed p-u (docs/theory.md §11).
   bool mixed_ = false;

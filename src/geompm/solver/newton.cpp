@@ -56,6 +56,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     halvings = 0;
     if (!admissible) {
       result.failure = "inadmissible deformation (a point's volume became <= 0)";
+      result.inadmissible = true;
       return result;
     }
     result.residuals.push_back(relative);

@@ -52,7 +52,8 @@ struct NewtonResult {
   /// With NewtonSettings::tangent_check, per correction: |(R(x + e dx) - R(x)) / e + R(x)| /
   /// |R(x)|, the tangent's relative error along dx (NaN where x + e dx was inadmissible).
   std::vector<double> tangent_errors;
-  std::string failure;  // why it did not converge
+  std::string failure;        // why it did not converge
+  bool inadmissible = false;  // it stopped because x turned a point inside out
 };
 
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,

@@ -283,6 +283,28 @@ TEST(GridSystemTangent, GimpThreeD) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Gimp);
 }
 
+// A step that turns points inside out is refused, and the grid names the lowest-numbered such
+// point for the failure message, whichever thread met it first; an admissible step names none.
+TEST(GridSystemInadmissible, NamesTheLowestPointThatTurnedInsideOut) {
+  auto spec = testing::read_example("oedometer/oedometer.yaml");
+  auto model = build_model(spec);
+  GridSettings settings;
+  settings.kinematics = spec.kinematics;
+  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  grid.initialise(model->points);
+  grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+  const int dim = grid.dim();
+  Vector du = Vector::Zero(grid.num_dofs());
+  Vector f;
+  ASSERT_TRUE(grid.internal_force(model->points, du, f, nullptr));
+  EXPECT_EQ(grid.inadmissible_point(), -1);
+  // du_x = -3 x: dF_xx = -2 at every point, det dF < 0 everywhere.
+  for (std::size_t a = 0; a < grid.active_nodes().size(); ++a)
+    du(static_cast<Index>(a) * dim) = -3.0 * model->mesh.nodes[grid.active_nodes()[a]].x();
+  EXPECT_FALSE(grid.internal_force(model->points, du, f, nullptr));
+  EXPECT_EQ(grid.inadmissible_point(), 0);
+}
+
 // The cell-averaged volume change (F-bar, docs/theory.md eqs. 12.1-12.3), of mixed or displacement
 // points: after a random increment every point of a cell has changed volume by the same ratio,
 // and the cell's points together by exactly as much as without the average
