@@ -1520,9 +1520,9 @@ def mixed_field_pressure_limit(runner, cases, q_displacement, Nc, S, end, last):
       f"{(q_displacement[fine] / Nc - 1) * 100:+.0f} % from it): "
       + "; ".join(parts) + ". The curves level off once the mechanism has formed (table, "
       "'change')." + peak + " "
-      "The h = B/40 run needs up to 14 Newton iterations a step and was not finished in the time "
-      "we had (it is not in this report). Asserted for h = B/20 in "
-      "`tests/verification/test_footing_validation.cpp`.")
+      + "On h = B/40 the run crawls: in the longest try it reached 0.0007 B (a third of the push) "
+      "in about 45 minutes of a shared machine, with up to 16 Newton iterations a step and steps "
+      "of about 1/70 of the largest; it is not in this report. Asserted for h = B/20 in `tests/verification/test_footing_validation.cpp`.")
     w("")
     return lines
 
@@ -2170,8 +2170,12 @@ FOOTING_DISCUSSION_8 = (
     "(`per_point`) at 0.009 B (a point's volume ≤ 0), so the dilatancy is not the whole story. Our "
     "reading, not yet shown: the yield condition sees the point's own pressure while equilibrium "
     "uses the interpolated p̂ (docs/theory.md §11), and where the two differ — beside the footing's "
-    "edge — the return switches from iterate to iterate; a return mapping that sees p̂ (the "
-    "pressure-dependent form of the mixed formulation) would remove the mismatch, and is not built. "
+    "edge — the return switches from iterate to iterate. A return mapping that sees p̂ is now "
+    "built (`mixed_material_pressure: field`, docs/theory.md §14, rows 'at the field's pressure'): "
+    "with each point's own volume change it runs to 0.05 B, 7 % below N_c there and levelling off "
+    "after a drop of 8 % near 0.039 B (from 14.3 to 13.1, in one step), "
+    "with at most 16 Newton iterations a step; with the cell average it stops at 0.033 B (a point's "
+    "volume ≤ 0). Its effect on the locking is clearest in the rigid-plastic limit below. "
     "With E = 1000 c the associated run with the displacement formulation stops at about 0.09 B the "
     "same way (points beside the footing's edge dilate by 70 %), hence the push of 0.05 B. F-bar "
     "(row F-bar: `formulation: f_bar`, each point with its cell's mean volume change, docs/theory.md "
