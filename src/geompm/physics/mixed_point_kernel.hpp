@@ -201,7 +201,9 @@ bool integrate_field_pressure_point(const Stencil<NS, Dim>& s, const PointStartS
     if (!std::isfinite(next) || next == x) break;
     x = next;
   }
-  if (!solved) return false;
+  // Unsolved, or a material whose pressure rises with its volume (softening beyond kappa): no
+  // unique R, and Newton cuts the step back.
+  if (!solved || !(t + kappa > 0.0)) return false;
 
   const double v = out.u.volume;
   out.total_stress = out.u.state.cauchy_stress + (p_mat - p_hat) * Mat3::Identity();
