@@ -492,7 +492,7 @@ PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) c
           points.internal[p]};
 }
 
-void GridSystem::note_inadmissible(Index p) {
+void GridSystem::note_inadmissible(Index p) const {
 #pragma omp critical(geompm_inadmissible_point)
   if (inadmissible_point_ < 0 || p < inadmissible_point_) inadmissible_point_ = p;
 }
@@ -609,8 +609,10 @@ bool GridSystem::average_volume_change(const MaterialPoints& points, Index ci,
     if (!is_averaged(points, p)) continue;
     double dJ = 1.0;
     if (!point_volume_change(stencil_of(p), start_state(points, p), du, axisymmetric, dJ,
-                             divergence))
+                             divergence)) {
+      note_inadmissible(p);
       return false;
+    }
     const double v_n = points.volume[p];
     start_volume += v_n;
     volume += v_n * dJ;
@@ -675,7 +677,6 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       if (averaging_ && point_end > cell_point_begin_[ci] &&
           !average_volume_change(
               points, ci, du_local, [&](Index q) { return cell_stencil<E>(q); }, average)) {
-        note_inadmissible(cell_point_begin_[ci]);
         admissible = false;
         continue;
       }
@@ -920,10 +921,8 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
                 fill_stencil(q, cell_nodes, padded);
                 return padded;
               },
-              average)) {
-        note_inadmissible(cell_point_begin_[ci]);
+              average))
         return false;
-      }
     }
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
       const bool mixed = is_mixed(points, p);

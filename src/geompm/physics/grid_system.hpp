@@ -278,9 +278,10 @@ class GridSystem {
   std::vector<std::int64_t> empty_offset_;  // per active cell: its block below, or -1 (none)
   std::vector<double> empty_stiffness_;     // cell_dofs()^2 per cell with (1 - fill) > 0
 
-  bool averaging_ = false;         // some material takes its cell's volume average (theory §12)
-  Index inadmissible_point_ = -1;  // see inadmissible_point()
-  void note_inadmissible(Index p);
+  bool averaging_ = false;  // some material takes its cell's volume average (theory §12)
+  // See inadmissible_point(); diagnostic state, written by const assembly helpers too.
+  mutable Index inadmissible_point_ = -1;
+  void note_inadmissible(Index p) const;
 
   // Mixed p-u (docs/theory.md §11).
   bool mixed_ = false;
