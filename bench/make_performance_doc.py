@@ -497,14 +497,16 @@ def main():
     if args.notes and os.path.exists(args.notes):
         with open(args.notes) as f:
             notes = f.read().rstrip()
-        # The footing timings are written by scripts/validation_report.py; the notes mark where
-        # they go, so the doc always carries the last ones (without their title).
-        marker = "<!-- bench/footing_timings.md -->"
-        timings = os.path.join(os.path.dirname(os.path.abspath(__file__)), "footing_timings.md")
-        if marker in notes and os.path.exists(timings):
-            with open(timings) as f:
-                body = f.read().strip().split("\n", 1)[-1].strip()
-            notes = notes.replace(marker, body)
+        # Tables written by other scripts (bench/footing_timings.md by
+        # scripts/validation_report.py, bench/predictor_timings.md by bench/newton_predictor.py);
+        # the notes mark where they go, so the doc always carries the last ones (without their
+        # title).
+        for name in re.findall(r"<!-- bench/([\w.]+\.md) -->", notes):
+            timings = os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
+            if os.path.exists(timings):
+                with open(timings) as f:
+                    body = f.read().strip().split("\n", 1)[-1].strip()
+                notes = notes.replace(f"<!-- bench/{name} -->", body)
         w(notes + "\n")
 
     w("## Reproducing\n")

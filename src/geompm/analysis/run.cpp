@@ -164,6 +164,7 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
 
   for (const auto& phase_spec : model.spec.phases) {
     PhaseContext phase(model, phase_spec);
+    stepper.start_phase();
     for (auto& d : model.points.phase_displacement) d.setZero();
     const auto& ts = phase_spec.time_step;
     double t = 0.0, dt = ts.initial;

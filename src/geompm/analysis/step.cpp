@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <unordered_map>
@@ -295,6 +296,57 @@ void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepR
   }
 }
 
+// The unknown's entry in last_rate_: dim displacements, then the pressure, per mesh node.
+namespace {
+// `later` with `earlier` in front, `earlier` padded with zeros to `size` entries.
+template <typename T>
+void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t size) {
+  if (earlier.size() < size) earlier.resize(size, T{});
+  earlier.insert(earlier.end(), later.begin(), later.end());
+  later = std::move(earlier);
+}
+
+// A Newton solve that followed a failed one in the same step, with the failed one's iterations
+// in front: the counts include both, and the log (newton.csv) shows both in turn. The log reads
+// the correction after residual k at corrections[k] - 1 and the tangent error at k, so those are
+// padded to the failed attempt's residuals (a zero where the second attempt starts).
+NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
+  const std::size_t n = failed.residuals.size();
+  second.iterations += failed.iterations;
+  second.halvings += failed.halvings;
+  put_in_front(second.residuals, failed.residuals, n);
+  put_in_front(second.largest, failed.largest, n);
+  put_in_front(second.corrections, failed.corrections, n);
+  if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
+    put_in_front(second.tangent_errors, failed.tangent_errors, n);
+  return second;
+}
+
+std::size_t rate_index(const UnknownAt& at, int dim) {
+  return static_cast<std::size_t>(at.node) * (dim + 1) + (at.unknown == 3 ? dim : at.unknown);
+}
+}  // namespace
+
+bool StepSolver::extrapolated_start(double dt, Vector& x) const {
+  if (last_rate_.empty()) return false;
+  const auto& free = grid_.free_index();
+  bool any = false;
+  for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+    if (free[d] >= 0) {
+      const UnknownAt at = unknown_at(grid_, d);
+      const double rate = last_rate_[rate_index(at, grid_.dim())];
+      x(free[d]) = rate * dt;
+      any = any || rate != 0.0;
+    }
+  return any;
+}
+
+void StepSolver::remember_increment(const Vector& du, double dt) {
+  last_rate_.assign(model_.mesh.nodes.size() * (grid_.dim() + 1), 0.0);
+  for (Index d = 0; d < du.size(); ++d)
+    last_rate_[rate_index(unknown_at(grid_, d), grid_.dim())] = du(d) / dt;
+}
+
 StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   StepResult result;
   MaterialPoints& points = model_.points;
@@ -356,8 +408,23 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
   settings.max_halvings = phase.spec->newton.line_search;
   settings.tangent_check = phase.spec->newton.tangent_check;
-  Vector x = Vector::Zero(grid_.num_free());  // Newton starts from a zero increment
-  result.newton = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
+  // Newton starts from a zero increment, or from the last step's extrapolated: the plastic zone
+  // and its flow are then in place from the first iterate, so fewer points switch between
+  // elastic and plastic in the iterations. Where that start fails (an inadmissible iterate, or
+  // Newton cycling between the plastic states of a few points), the step is solved again from
+  // zero, whose first iterate is elastic, before it is cut back; both attempts are counted.
+  // The extrapolated start gets half of the iterations: one that has not converged by then is
+  // not the quick start it is meant to be, and the zero start still gets all of them.
+  Vector x = Vector::Zero(grid_.num_free());
+  const bool extrapolated = phase.spec->newton.extrapolate && extrapolated_start(dt, x);
+  NewtonSettings first = settings;
+  if (extrapolated) first.max_iterations = std::max(1, settings.max_iterations / 2);
+  result.newton = solve_newton(problem, solver_, first, x, grid_.tangent_storage());
+  if (extrapolated && !result.newton.converged) {
+    x.setZero();
+    NewtonResult from_zero = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
+    result.newton = after_attempt(result.newton, std::move(from_zero));
+  }
   for (const Index dof : result.newton.largest)
     result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
   if (!result.newton.converged) {
@@ -380,6 +447,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
 
   // --- phase 3: convect ---------------------------------------------------------------------
   result.displacement = du;
+  if (phase.spec->newton.extrapolate) remember_increment(du, dt);
   if (dynamic) {
     result.acceleration = newmark.acceleration(du, grid_.velocity(), grid_.acceleration());
     result.velocity = newmark.velocity(grid_.velocity(), grid_.acceleration(), result.acceleration);

@@ -52,7 +52,13 @@ class StepSolver {
 
   GridSystem& grid() { return grid_; }
 
+  /// Forgets the last step's increment, so that the phase's first step does not extrapolate the
+  /// previous phase's path (`newton: {predictor: extrapolated}`).
+  void start_phase() { last_rate_.clear(); }
+
  private:
+  bool extrapolated_start(double dt, Vector& x) const;
+  void remember_increment(const Vector& du, double dt);
   void convect_and_relocate(StepResult& result, double dt, bool dynamic);
   void prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
                                std::vector<Vec3>& prescribed);
@@ -63,6 +69,9 @@ class StepSolver {
   Model& model_;
   LinearSolver& solver_;
   GridSystem grid_;
+  // The last converged step's increment per unit time, per mesh node and unknown (dim
+  // displacements, then the pressure): Newton's first iterate with `predictor: extrapolated`.
+  std::vector<double> last_rate_;
 };
 
 }  // namespace geompm

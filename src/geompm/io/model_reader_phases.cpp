@@ -85,8 +85,9 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
 }
 
 spec::Newton read_newton(const yaml::Node& node) {
-  const yaml::Map section = node.map({"max_iterations", "residual_tolerance",
-                                      "displacement_tolerance", "line_search", "tangent_check"});
+  const yaml::Map section =
+      node.map({"max_iterations", "residual_tolerance", "displacement_tolerance", "line_search",
+                "tangent_check", "predictor"});
   spec::Newton newton;
   if (auto iterations = section.find("max_iterations")) {
     newton.max_iterations = iterations->integer();
@@ -114,6 +115,8 @@ spec::Newton read_newton(const yaml::Node& node) {
                       "fraction of each Newton correction, found {}",
                       newton.tangent_check));
   }
+  if (auto predictor = section.find("predictor"))
+    newton.extrapolate = predictor->choice({"zero", "extrapolated"}) == "extrapolated";
   return newton;
 }
 

@@ -61,12 +61,15 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   std::string text =
       kLoadingModel + "numerics: {mixed_volume: per_point, mixed_material_pressure: field}\n";
   const std::string step = "    time_step: 0.1\n";
-  text.replace(text.find(step), step.size(), step + "    newton: {line_search: 4}\n");
+  text.replace(text.find(step), step.size(),
+               step + "    newton: {line_search: 4, predictor: extrapolated}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_FALSE(model.numerics.mixed_volume_average);
   EXPECT_TRUE(model.numerics.mixed_field_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
+  EXPECT_TRUE(model.phases.at(1).newton.extrapolate);
+  EXPECT_FALSE(model.phases.at(0).newton.extrapolate);
   const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
   EXPECT_TRUE(defaults.numerics.mixed_volume_average);
   EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
@@ -327,6 +330,11 @@ const std::vector<LoadingCase> kLoadingCases = {
      "newton: {line_search: -1}",
      "phases[1].newton.line_search",
      "expected a whole number from 0 to 20"},
+    {"predictor_unknown",
+     {{"    time_step: 0.1\n", "    time_step: 0.1\n    newton: {predictor: linear}\n"}},
+     "newton: {predictor: linear}",
+     "phases[1].newton.predictor",
+     "expected one of: zero, extrapolated"},
     {"mixed_volume_unknown",
      {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
        "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
