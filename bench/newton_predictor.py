@@ -107,7 +107,8 @@ def main():
                 return f"stopped: {failure} | | | | "
             return f"{s[0]} | {s[1]} | {s[2]} | {s[3]} | {w:.1f} s"
         lines.append(f"| {label} (`{example}`) | {cells(s0, w0, f0)} | {cells(s1, w1, f1)} | "
-                     + (f"{difference:.1e}" if difference == difference else "other steps")
+                     + ("other steps" if difference != difference else
+                        "identical as printed" if difference == 0 else f"{difference:.1e}")
                      + " |")
     with open(os.path.join(ROOT, "bench", "predictor_timings.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -23,6 +23,18 @@ std::string with_predictor(std::string text, const std::string& newton) {
       testing::replace_once(newton, "newton: {", "newton: {predictor: extrapolated, "));
 }
 
+// The example run twice, VTK output off: from zero and with the extrapolated start.
+struct BothStarts {
+  testing::ModelRun zero, extrapolated;
+};
+BothStarts run_both_starts(const std::string& example, const std::string& vtk,
+                           const std::string& newton, const std::string& name) {
+  const auto text = testing::replace_once(testing::example_text(example), vtk, "vtk: {every: 0}");
+  return {testing::run_spec(read_model_from_string(text, name + ".yaml"), name + "_zero"),
+          testing::run_spec(read_model_from_string(with_predictor(text, newton), name + ".yaml"),
+                            name + "_extrapolated")};
+}
+
 double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double scale = 0.0, difference = 0.0;
   for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
@@ -38,12 +50,8 @@ TEST(NewtonPredictor, ExtrapolatedStartFindsTheSameSolutionInFewerIterations) {
   // carry over from step to step.
   const std::string newton =
       "newton: {max_iterations: 10, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-9}";
-  const auto text =
-      testing::replace_once(testing::example_text("thick_cylinder/thick_cylinder.yaml"),
-                            "vtk: {every: 5}", "vtk: {every: 0}");
-  const auto zero = testing::run_spec(read_model_from_string(text, "tube.yaml"), "tube_zero");
-  const auto extrapolated = testing::run_spec(
-      read_model_from_string(with_predictor(text, newton), "tube.yaml"), "tube_extrapolated");
+  const auto [zero, extrapolated] =
+      run_both_starts("thick_cylinder/thick_cylinder.yaml", "vtk: {every: 5}", newton, "tube");
   std::printf("[thick cylinder] Newton iterations: %d from zero, %d extrapolated (steps %d, %d)\n",
               zero.summary.iterations, extrapolated.summary.iterations, zero.summary.steps,
               extrapolated.summary.steps);
@@ -63,12 +71,8 @@ TEST(NewtonPredictor, AStepWhoseExtrapolatedStartFailsIsSolvedFromZero) {
   // without it, it stops there.
   const std::string newton =
       "newton: {max_iterations: 20, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}";
-  const auto text =
-      testing::replace_once(testing::example_text("mohr_coulomb_footing/mohr_coulomb_footing.yaml"),
-                            "vtk: {every: 10}", "vtk: {every: 0}");
-  const auto zero = testing::run_spec(read_model_from_string(text, "strip.yaml"), "strip_zero");
-  const auto extrapolated = testing::run_spec(
-      read_model_from_string(with_predictor(text, newton), "strip.yaml"), "strip_extrapolated");
+  const auto [zero, extrapolated] = run_both_starts(
+      "mohr_coulomb_footing/mohr_coulomb_footing.yaml", "vtk: {every: 10}", newton, "strip");
   const double q_zero = zero.column("force").back(),
                q_extrapolated = extrapolated.column("force").back();
   std::printf(
