@@ -296,7 +296,6 @@ void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepR
   }
 }
 
-// The unknown's entry in last_rate_: dim displacements, then the pressure, per mesh node.
 namespace {
 // `later` with `earlier` in front, `earlier` padded with zeros to `size` entries.
 template <typename T>
@@ -307,9 +306,9 @@ void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t siz
 }
 
 // A Newton solve that followed a failed one in the same step, with the failed one's iterations
-// in front: the counts include both, and the log (newton.csv) shows both in turn. The log reads
-// the correction after residual k at corrections[k] - 1 and the tangent error at k, so those are
-// padded to the failed attempt's residuals (a zero where the second attempt starts).
+// in front: the counts include both, and the log (newton.csv) shows both in turn. The log pairs
+// residual k with corrections[k - 1] (the correction that led to it) and tangent_errors[k], so
+// those are padded to the failed attempt's residuals (a zero where the second attempt starts).
 NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   const std::size_t n = failed.residuals.size();
   second.iterations += failed.iterations;
@@ -322,6 +321,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   return second;
 }
 
+// The unknown's entry in last_rate_: dim displacements, then the pressure, per mesh node.
 std::size_t rate_index(const UnknownAt& at, int dim) {
   return static_cast<std::size_t>(at.node) * (dim + 1) + (at.unknown == 3 ? dim : at.unknown);
 }
