@@ -1620,6 +1620,14 @@ def mixed_field_pressure_limit(runner, cases, q_displacement, Nc, S, end, last):
           f"{FIELD_EASY}, as here, that run still crawled (0.0008 B, 40 % of the push, in 20 "
           "minutes of a shared machine), so the table stops at h = B/20.")
         w("")
+    w("*With a known limitation.* These runs use the field formulation as it stands, whose "
+      "points' pressure drifts a little in every step where the pressure varies within a cell "
+      "(docs/theory.md §14, known limitation). Two drift-free variants, tried by hand, carried "
+      "the same loads to 0.5–1.5 % on h = B/10 and B/20 but stopped at about half of the push "
+      "(0.001 B), a checkerboard of the pressure or Newton failing near the surface 1–3 B from "
+      "the axis; so the rows above rely on the drift's smoothing of the pressure from step to "
+      "step, and the field formulation's dilatancy relief is not yet established without it.")
+    w("")
     return lines
 
 
