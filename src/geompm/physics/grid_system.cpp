@@ -489,7 +489,8 @@ PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) c
           points.volume[p],
           points.deformation_gradient[p],
           points.elastic_left_cauchy_green[p],
-          points.internal[p]};
+          points.internal[p],
+          points.volume_mismatch[p]};
 }
 
 void GridSystem::note_inadmissible(Index p) const {
@@ -562,7 +563,8 @@ void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
   //   S = sum_p (v_p / G_p) (N_p - m)(N_p - m)^T,   m = sum_p v_p N_p / sum_p v_p,
   // over the cell's mixed points with their start-of-step volumes (so S does not depend on the
   // unknowns). It removes the checkerboard modes equal-order u-p cells allow and vanishes for a
-  // pressure constant over the cell.
+  // pressure constant over the cell. At the field's pressure it is made stronger (eq. 14.4).
+  const double strength = settings_.mixed_field_pressure ? field_pressure_stabilisation : 1.0;
   constexpr int nen = E::nodes;
   using Values = Eigen::Matrix<double, nen, 1>;
   S.setZero();
@@ -579,7 +581,7 @@ void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
     if (is_mixed(points, p)) {
       const double shear = materials_[points.material[p]]->elastic_moduli(points.internal[p]).shear;
       const Values d = Eigen::Map<const Values>(shape_.data() + std::size_t(p) * nen) - mean;
-      S.noalias() += (points.volume[p] / shear) * (d * d.transpose());
+      S.noalias() += (strength * points.volume[p] / shear) * (d * d.transpose());
     }
 }
 
@@ -689,7 +691,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         // spring and its state.
         const FiniteStrainState* state = &r.state;
         const Mat3* stress = &r.state.cauchy_stress;
-        double volume = 0.0, own_volume = 0.0;
+        double volume = 0.0, own_volume = 0.0, volume_mismatch = 0.0;
         bool ok = false;
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
@@ -709,6 +711,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
               stress = &rm.total_stress;
               volume = rm.u.state_volume;
               own_volume = rm.u.volume;
+              volume_mismatch = rm.volume_mismatch;
             }
           }
         }
@@ -729,7 +732,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         }
         if (has_point_force(p))
           add_point_forces(p, s.N, s.dN_dX, du_local, tangent != nullptr, f_cell, K_cell);
-        commit(p, *state, volume, *stress, own_volume);
+        commit(p, *state, volume, *stress, own_volume, volume_mismatch);
       }
       for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
       if (tangent) {
@@ -957,7 +960,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
           K_local.resize(local, local);
           K_local << rm.u.stiffness, s_p * rm.K_up, s_p * rm.K_pu, (s_p * s_p) * rm.K_pp;
         }
-        commit(p, rm.u.state, rm.u.state_volume, rm.total_stress, rm.u.volume);
+        commit(p, rm.u.state, rm.u.state_volume, rm.total_stress, rm.u.volume, rm.volume_mismatch);
       } else {
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r,
                              averaged ? &average : nullptr)) {

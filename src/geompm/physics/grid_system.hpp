@@ -228,8 +228,9 @@ class GridSystem {
   /// changes; `own_volume`: the volume its own deformation gives, which differs from `volume`
   /// with a cell's volume average and stretches its domain, eq. 12.7).
   void commit(Index p, const FiniteStrainState& state, double volume, const Mat3& stress,
-              double own_volume) const {
+              double own_volume, double volume_mismatch = 0.0) const {
     if (!commit_to_) return;
+    commit_to_->volume_mismatch[p] = volume_mismatch;
     commit_to_->domain_stretch[p] *= std::pow(own_volume / volume, 1.0 / dim_);
     commit_to_->stress[p] = stress;
     commit_to_->deformation_gradient[p] = state.deformation_gradient;

@@ -22,6 +22,12 @@ namespace geompm {
 /// material sees near its kinematic one where its pressure does not change with the volume.
 inline constexpr double field_pressure_volume_stiffness = 1e-3;
 
+/// eq. 14.4: the pressure stabilisation (eq. 11.5) at the field's pressure, as a multiple of the
+/// 1/G of the material's own: with 1 or 3 a node-to-node checkerboard of the accumulated pressure
+/// grows in the plastic zone of the stiff c-phi strip (validation.md §8) and stops it; 10 and 30
+/// carry it through with loads 0.6 % apart (theory §14).
+inline constexpr double field_pressure_stabilisation = 10.0;
+
 template <int NS, int Dim>
 struct MixedKernelResult {
   using Base = KernelResult<NS, Dim>;
@@ -32,6 +38,7 @@ struct MixedKernelResult {
   Eigen::Matrix<double, NS, n> K_pu;               // d g / d u
   Eigen::Matrix<double, NS, NS> K_pp;              // d g / d p
   Mat3 total_stress;                               // sigma~
+  double volume_mismatch = 0.0;  // at the field's pressure: ln J_k - ln R at the end of the step
 };
 
 /// The mixed spatial tangent (eqs. 11.3-11.4). a = a_mat - sigma_il delta_jk (eq. 3.9); its
@@ -87,6 +94,7 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
     return integrate_field_pressure_point(s, p, du, p_nodes, axisymmetric, want_tangent, out,
                                           average);
   GradientOperator<NS, Dim> B;
+  out.volume_mismatch = 0.0;
   if (!deform_point(s, p, du, axisymmetric, want_tangent, out.u, B, average)) return false;
 
   const Mat3& sigma = out.u.state.cauchy_stress;
@@ -141,8 +149,9 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
 /// uses. j_k is the kinematic volume ratio (the point's own or its cell's average); kappa, a
 /// small fraction of the bulk modulus, makes the solution unique where p_mat does not change
 /// with the volume (at the apex of a cone, which cannot carry a p^ beyond its tension). The
-/// pressure equation ties R to j_k in the mean over each node's support,
-///   g = v N (ln j_k - ln R)                                                      (eq. 14.2)
+/// pressure equation ties R to j_k in the mean over each node's support, over all steps so far,
+///   g = v N (m_n + ln j_k - ln R)                                                (eq. 14.2)
+/// with m_n the point's mismatch ln J_k - ln R at the start of the step.
 /// which for an elastic material is eq. 11.2 to first order. Other arguments as
 /// integrate_mixed_point.
 template <int NS, int Dim>
@@ -210,8 +219,12 @@ bool integrate_field_pressure_point(const Stencil<NS, Dim>& s, const PointStartS
   Eigen::Matrix<double, nc, 1> sigma_total;
   for (int c = 0; c < nc; ++c) sigma_total(c) = out.total_stress(GC::row[c], GC::col[c]);
   out.u.internal_force.noalias() = v * (B.transpose() * sigma_total);
-  const double mismatch = x_kin - x;
-  out.pressure_residual = (v * mismatch) * s.N;  // eq. 14.2
+  // Eq. 14.2 holds the mismatch accumulated over all steps, not the step's alone: with the step's,
+  // the stabilisation of a pressure that varies within a cell (self-weight) would be balanced by
+  // a new mismatch in every step, and the points' pressure would drift at rest (theory §14).
+  const double mismatch = p.volume_mismatch + x_kin - x;
+  out.volume_mismatch = mismatch;
+  out.pressure_residual = (v * mismatch) * s.N;
   if (!want_tangent) return true;
 
   // Eq. 14.3: x = ln R follows u and p^ so that eq. 14.1 stays satisfied,

@@ -55,6 +55,7 @@ struct PointStartState {
   Mat3 F;
   Mat3 be;
   InternalVariables internal;
+  double volume_mismatch = 0.0;  // MaterialPoints::volume_mismatch at the start of the step
 };
 
 template <int NS, int Dim>

@@ -24,6 +24,7 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
   stress.push_back(Mat3::Zero());
   deformation_gradient.push_back(Mat3::Identity());
   domain_stretch.push_back(1.0);
+  volume_mismatch.push_back(0.0);
   elastic_left_cauchy_green.push_back(Mat3::Identity());
   internal.push_back(InternalVariables{});
   cell.push_back(cell_index);
@@ -53,6 +54,7 @@ void for_each_field(MaterialPoints& p, Fn&& fn) {
   fn(p.stress);
   fn(p.deformation_gradient);
   fn(p.domain_stretch);
+  fn(p.volume_mismatch);
   fn(p.elastic_left_cauchy_green);
   fn(p.internal);
   fn(p.cell);

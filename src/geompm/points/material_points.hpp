@@ -38,6 +38,10 @@ struct MaterialPoints {
   /// F_domain = F^ scaled by this on the grid's directions (docs/theory.md eq. 12.7); 1 without
   /// an average.
   std::vector<double> domain_stretch;
+  /// A mixed point evaluated at the field's pressure (docs/theory.md §14): how far the log of its
+  /// kinematic volume ratio has run ahead of its material's over all steps so far, ln J_k - ln R
+  /// (eq. 14.2 ties its mean over each node's support to the stabilisation); 0 otherwise.
+  std::vector<double> volume_mismatch;
   std::vector<Mat3> elastic_left_cauchy_green;  // b_e = F_e F_e^T
   std::vector<InternalVariables> internal;
   std::vector<Index> cell;  // cell containing the point

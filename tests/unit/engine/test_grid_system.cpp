@@ -59,6 +59,10 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
     }
   auto model = build_model(spec);
   if (interpolation == GridInterpolation::Gimp) scatter_points(*model, 0.6);
+  // A volume mismatch carried from earlier steps (eq. 14.2), different at every point, so that
+  // the field-pressure cases check its share of the residual and of K_pu.
+  for (Index p = 0; p < model->points.size(); ++p)
+    model->points.volume_mismatch[p] = 0.01 * std::sin(1.0 + p);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
