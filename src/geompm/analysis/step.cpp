@@ -128,7 +128,7 @@ class LagrangianProblem final : public NonlinearProblem {
 UnknownAt unknown_at(const GridSystem& grid, Index dof) {
   const int dim = grid.dim();
   const Index displacements = static_cast<Index>(grid.active_nodes().size()) * dim;
-  if (dof >= displacements) return {grid.active_nodes()[dof - displacements], 3};
+  if (dof >= displacements) return {grid.active_nodes()[dof - displacements], UnknownAt::kPressure};
   return {grid.active_nodes()[dof / dim], static_cast<int>(dof % dim)};
 }
 
@@ -140,7 +140,7 @@ std::string out_of_balance(const GridSystem& grid, const Mesh& mesh, Index dof, 
   const std::string at = grid.dim() == 3
                              ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
                              : fmt::format("({:.4g}, {:.4g})", x.x(), x.y());
-  if (u.unknown == 3)
+  if (u.unknown == UnknownAt::kPressure)
     return fmt::format("largest residual in the pressure equation of node {} at {}", u.node, at);
   return fmt::format("largest out-of-balance force {:.3g} in {} at node {} {}", value,
                      "xyz"[u.unknown], u.node, at);
@@ -323,7 +323,8 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
 
 // The unknown's entry in last_rate_: dim displacements, then the pressure, per mesh node.
 std::size_t rate_index(const UnknownAt& at, int dim) {
-  return static_cast<std::size_t>(at.node) * (dim + 1) + (at.unknown == 3 ? dim : at.unknown);
+  return static_cast<std::size_t>(at.node) * (dim + 1) +
+         (at.unknown == UnknownAt::kPressure ? dim : at.unknown);
 }
 }  // namespace
 

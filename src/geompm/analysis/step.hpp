@@ -16,8 +16,9 @@
 namespace geompm {
 
 /// A grid unknown: the mesh node it belongs to and what it is (0, 1, 2: displacement in x, y,
-/// z; 3: pressure); node -1 if not known.
+/// z; kPressure: pressure); node -1 if not known.
 struct UnknownAt {
+  static constexpr int kPressure = 3;
   Index node = -1;
   int unknown = -1;
 };
