@@ -2017,11 +2017,15 @@ NG20_ROUGH = 2.84
 NG20_PUSH = {5: 0.02, 10: 0.012, 20: 0.006}
 
 
-def ngamma_phi20_text(n, field=False):
+def ngamma_phi20_text(n, field=False, loose=False):
     """The rough N_gamma footing at phi = psi = 20 deg on n cells under the half-width, with
     backtracking (`line_search: 6`), VTK off; in the mixed formulation at the field's pressure if
-    `field`."""
+    `field`; with Newton's test on the corrections relaxed to 1e-4 in the push if `loose` (the
+    residual's, 1e-7, unchanged)."""
     t = example("frictional_footing/frictional_footing_ngamma.yaml")
+    if loose:
+        t = replace_once(t, "residual_tolerance: 1.0e-7,\n             displacement_tolerance: 1.0e-8}",
+                         "residual_tolerance: 1.0e-7,\n             displacement_tolerance: 1.0e-4}")
     t = replace_once(t, "phi: 30, psi: 30,", "phi: 20, psi: 20,")
     t = replace_once(t, '"-0.007*t"', f'"-{NG20_PUSH[n]}*t"')
     t = replace_once(t, "newton: {predictor: extrapolated, max_iterations: 20,",
@@ -2039,6 +2043,7 @@ def ngamma_phi20(runner, SG):
     levels = tuple(NG20_PUSH)
     cases = {f"ng20_n{n}": ngamma_phi20_text(n) for n in levels}
     cases.update({f"ng20_field_n{n}": ngamma_phi20_text(n, field=True) for n in (5, 10)})
+    cases.update({f"ng20_loose_n{n}": ngamma_phi20_text(n, loose=True) for n in levels})
     runs = runner.batch(cases)
     at = (0.001, 0.002, 0.004, 0.006)
     s_fix, s_late = 0.004, 0.006  # every mesh's run reaches both
@@ -2057,6 +2062,7 @@ def ngamma_phi20(runner, SG):
     w("|---" * 13 + "|")
     q_fix, rise = {}, {}
     for key, form, n in [(f"ng20_n{n}", "displacement", n) for n in levels] + [
+            (f"ng20_loose_n{n}", "displacement, corrections' test 10⁻⁴", n) for n in levels] + [
             (f"ng20_field_n{n}", "mixed p–u at the field's pressure", n) for n in (5, 10)]:
         r = runs[key]
         if r.h is None or len(r.h) < 3:
@@ -2078,6 +2084,10 @@ def ngamma_phi20(runner, SG):
         r = runs[f"ng20_n{n}"]
         if r.h is not None and len(r.h) > 2:
             series.append((f"h = B/{2 * n}", *push_curve(r, SG), style))
+    for n, style in zip(levels, ("C3:", "C3--", "C3-")):
+        r = runs[f"ng20_loose_n{n}"]
+        if r.h is not None and len(r.h) > 2:
+            series.append((f"corrections' test 10⁻⁴, h = B/{2 * n}", *push_curve(r, SG), style))
     for n, style in ((5, "C2:"), (10, "C2--")):
         r = runs[f"ng20_field_n{n}"]
         if r.h is not None and len(r.h) > 2:
@@ -2114,6 +2124,7 @@ def ngamma_phi20(runner, SG):
       "are few and the locked dilation there carries much of the load. A finer mesh (h = B/80, tried "
       "by hand, pushed 0.004 B) reached 0.002 B in 24 minutes, still on the rise (N_γ = 3.5 there, "
       "against 3.84 on h = B/40), with Newton backtracking in most steps: not in the table.")
+    lines += ngamma_phi20_loose(runs, levels, SG)
     field = [(n, runs[f"ng20_field_n{n}"]) for n in (5, 10)]
     parts = []
     for n, r in field:
@@ -2136,6 +2147,81 @@ def ngamma_phi20(runner, SG):
           "their strength (c ≈ 0), a known limitation of the field's pressure under self-weight "
           "(docs/theory.md §14, measured there on h = B/10).")
     w("")
+    return lines
+
+
+def failed_attempts(out, tolerance):
+    """(Newton attempts of a run that did not converge, those of them whose last residual was
+    below `tolerance`), from its newton.csv: an attempt restarts where an iteration after the
+    first has no correction."""
+    h = np.genfromtxt(os.path.join(out, "newton.csv"), delimiter=",", names=True)
+    failed = quiet = 0
+    for k in range(len(h)):
+        end = (k + 1 == len(h) or h["step"][k + 1] != h["step"][k] or h["time"][k + 1] != h["time"][k]
+               or (h["iteration"][k + 1] > 0 and h["relative_correction"][k + 1] == 0.0))
+        if end and h["converged"][k] == 0:
+            failed += 1
+            quiet += h["relative_residual"][k] < tolerance
+    return failed, int(quiet)
+
+
+def ngamma_phi20_loose(runs, levels, SG):
+    """The phi = 20 deg N_gamma runs with Newton's test on the corrections relaxed: how far they
+    go, and the mean loads of the finished runs over the second half of their pushes by mesh."""
+    lines = []
+    w = lines.append
+
+    def second_half(r):
+        x, q = push_curve(r, SG)
+        late = q[x >= 0.5 * x[-1]]
+        return x[-1], late.mean(), late.min(), late.max()
+
+    ends = {n: runs[f"ng20_loose_n{n}"] for n in levels}
+    ends = {n: r for n, r in ends.items() if r.h is not None and len(r.h) > 2}
+    if not ends:
+        return lines
+    stalls = runs[f"ng20_n{levels[1]}"]
+    failed, quiet = failed_attempts(stalls.out, 1e-7)
+    w("")
+    w("*Newton's test on the corrections* (rows 'corrections' test 10⁻⁴': `displacement_tolerance: "
+      "1.0e-4` in the push, the residual's test, 10⁻⁷, unchanged). Some of the Newton attempts that "
+      "fail in the runs above end with a residual already below its tolerance while the "
+      "corrections do not shrink: points at the apex of the cone at the free surface beside the "
+      "footing carry no stiffness, so a mode of the surface nodes over them moves without force "
+      f"(in the h = B/{2 * levels[1]} run, which {push_end(stalls, SG)}: {failed} failed Newton "
+      f"attempts, {quiet} of them ended with the residual below its tolerance). With the "
+      "corrections' test relaxed: "
+      + "; ".join(f"h = B/{2 * n} {push_end(r, SG)}" for n, r in ends.items()) + ".")
+    # The mean over the second half of the push of each mesh's finished run (the strict test's if
+    # it finished, else the relaxed one's).
+    mean = {}
+    for n in levels:
+        for key, label in ((f"ng20_n{n}", "strict"), (f"ng20_loose_n{n}", "relaxed")):
+            if runs[key].ok:
+                e, m, lo, hi = second_half(runs[key])
+                mean[n] = (m, f"h = B/{2 * n} ({label} test, to {e:.4f} B): {lo:.2f}–{hi:.2f}, mean "
+                              f"{m:.2f} ({(m / NG20_ROUGH - 1) * 100:+.0f} %)")
+                break
+    same = []
+    for n in levels:
+        strict, loose = runs[f"ng20_n{n}"], runs[f"ng20_loose_n{n}"]
+        if strict.ok and loose.ok:
+            same.append(f"h = B/{2 * n} {(second_half(loose)[1] / second_half(strict)[1] - 1) * 100:+.1f} %")
+    if same:
+        w("Where both tests finish, the relaxed one changes the mean over the second half of the "
+          "push by " + ", ".join(same) + ".")
+    if mean:
+        w("Over the second half of each mesh's finished push the load lies within "
+          + "; ".join(v for _, v in mean.values()) + ".")
+    fine = [n for n in levels if n in mean][-2:]
+    if len(fine) == 2 and fine[1] == levels[-1]:
+        a, b = mean[fine[0]][0], mean[fine[1]][0]
+        ratio = (a / NG20_ROUGH - 1) / (b / NG20_ROUGH - 1)
+        w(f"From h = B/{2 * fine[0]} to B/{2 * fine[1]} the error of these means falls by a factor "
+          f"of {ratio:.2f} (2 for first-order convergence); extrapolated from the two at order 1 the "
+          f"load would be {2 * b - a:.2f} ({(2 * b - a) / NG20_ROUGH * 100 - 100:+.0f} % from "
+          "Martin's value), which we do not claim: two meshes, one of them levelled off only with "
+          "the relaxed test, and the coarsest mesh still rising, so the order is not measured.")
     return lines
 
 
