@@ -2105,11 +2105,10 @@ def ngamma_phi20(runner, SG):
     fine = runs[f"ng20_n{levels[-1]}"]
     plateau = ""
     if fine.ok:
-        x, q = push_curve(fine, SG)
-        late = q[x >= 0.5 * x[-1]]
-        plateau = (f" On h = B/{2 * levels[-1]} the load stays within {late.min():.2f}–{late.max():.2f} "
-                   f"over the second half of its push (mean {late.mean():.2f}, "
-                   f"{(late.mean() / NG20_ROUGH - 1) * 100:+.0f} % from Martin's value, with the noise "
+        _, mean, least, most = second_half(fine, SG)
+        plateau = (f" On h = B/{2 * levels[-1]} the load stays within {least:.2f}–{most:.2f} "
+                   f"over the second half of its push (mean {mean:.2f}, "
+                   f"{(mean / NG20_ROUGH - 1) * 100:+.0f} % from Martin's value, with the noise "
                    "of Newton steps that need backtracking at the free surface beside the footing): "
                    "nearly a limit load, the first an N_γ run reaches here.")
     w(f"**N_γ at φ = 20°: not reached.** At {s_fix:g} B, against {NG20_ROUGH}: {errors}; the error "
@@ -2165,16 +2164,18 @@ def failed_attempts(out, tolerance):
     return failed, int(quiet)
 
 
+def second_half(r, scale):
+    """(where the push ended, the mean, least and largest load over its second half)."""
+    x, q = push_curve(r, scale)
+    late = q[x >= 0.5 * x[-1]]
+    return float(x[-1]), float(late.mean()), float(late.min()), float(late.max())
+
+
 def ngamma_phi20_loose(runs, levels, SG):
     """The phi = 20 deg N_gamma runs with Newton's test on the corrections relaxed: how far they
     go, and the mean loads of the finished runs over the second half of their pushes by mesh."""
     lines = []
     w = lines.append
-
-    def second_half(r):
-        x, q = push_curve(r, SG)
-        late = q[x >= 0.5 * x[-1]]
-        return x[-1], late.mean(), late.min(), late.max()
 
     ends = {n: runs[f"ng20_loose_n{n}"] for n in levels}
     ends = {n: r for n, r in ends.items() if r.h is not None and len(r.h) > 2}
@@ -2198,7 +2199,7 @@ def ngamma_phi20_loose(runs, levels, SG):
     for n in levels:
         for key, label in ((f"ng20_n{n}", "strict"), (f"ng20_loose_n{n}", "relaxed")):
             if runs[key].ok:
-                e, m, lo, hi = second_half(runs[key])
+                e, m, lo, hi = second_half(runs[key], SG)
                 mean[n] = (m, f"h = B/{2 * n} ({label} test, to {e:.4f} B): {lo:.2f}–{hi:.2f}, mean "
                               f"{m:.2f} ({(m / NG20_ROUGH - 1) * 100:+.0f} %)")
                 break
@@ -2206,7 +2207,7 @@ def ngamma_phi20_loose(runs, levels, SG):
     for n in levels:
         strict, loose = runs[f"ng20_n{n}"], runs[f"ng20_loose_n{n}"]
         if strict.ok and loose.ok:
-            same.append(f"h = B/{2 * n} {(second_half(loose)[1] / second_half(strict)[1] - 1) * 100:+.1f} %")
+            same.append(f"h = B/{2 * n} {(second_half(loose, SG)[1] / second_half(strict, SG)[1] - 1) * 100:+.1f} %")
     if same:
         w("Where both tests finish, the relaxed one changes the mean over the second half of the "
           "push by " + ", ".join(same) + ".")
