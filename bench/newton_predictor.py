@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Newton's first iterate: zero against extrapolated (`newton: {predictor: extrapolated}`,
-docs/theory.md §4.5), on example models run to their end with `geompm run -t 1`.
+"""Newton's first iterate: zero, zero with the plastic side's tangent at points on the yield
+surface (`surface_tangent: plastic`, docs/materials.md §1.7), and extrapolated (`newton:
+{predictor: extrapolated}`, docs/theory.md §4.5), on example models run to their end with
+`geompm run -t 1`.
 
     /usr/bin/python3 bench/newton_predictor.py [--build-dir build] [--repetitions 3]
 
@@ -12,6 +14,7 @@ import argparse
 import os
 import re
 import statistics
+import sys
 import subprocess
 import tempfile
 
@@ -19,18 +22,43 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
+# Models derived from the examples as docs/validation.md derives them: `stiff_strip:n` is the c-phi
+# strip's rigid-plastic limit of §8 (E = 5e4 c, pushed 0.002 B) on n cells under the half-width.
+STIFF = "stiff_strip:"
+
 # (label, example, load column): plastic runs with a mechanism that carries over from step to step.
 MODELS = [
     ("N_q strip, Mohr–Coulomb, displacement formulation", "frictional_footing/frictional_footing_nq.yaml", "force"),
     ("N_γ rough strip, Mohr–Coulomb, displacement formulation", "frictional_footing/frictional_footing_ngamma.yaml", "force"),
     ("N_γ smooth strip, Mohr–Coulomb, displacement formulation", "frictional_footing/frictional_footing_ngamma_smooth.yaml", "force"),
     ("c–φ strip, Mohr–Coulomb, displacement formulation", "mohr_coulomb_footing/mohr_coulomb_footing.yaml", "force"),
+    ("c–φ strip, rigid-plastic limit of validation §8, h = B/20", STIFF + "10", "force"),
+    ("c–φ strip, rigid-plastic limit of validation §8, h = B/40", STIFF + "20", "force"),
     ("thick cylinder, Tresca, mixed p–u", "thick_cylinder/thick_cylinder.yaml", "force"),
     ("strip, steel block, Tresca, mixed p–u", "strip_footing/strip_footing.yaml", "force"),
     ("strip, smooth rigid footing, Tresca, mixed p–u", "strip_footing/strip_footing_smooth.yaml", "force"),
     ("strip, rough rigid footing, Tresca, mixed p–u", "strip_footing/strip_footing_rigid_rough.yaml", "force"),
     ("circular, rough rigid footing, Tresca, mixed p–u", "circular_footing/circular_footing_rigid_rough.yaml", "force"),
 ]
+
+# The soil models whose update `surface_tangent` steers.
+PLASTIC_SIDE = re.compile(r"(model: (?:mohr_coulomb|tresca),)")
+
+
+def model_text(example):
+    if example.startswith(STIFF):
+        sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        import validation_report as report
+        n = int(example[len(STIFF):])
+        text = report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml")
+        text = report.replace_once(report.replace_once(report.strip_mesh(text, n), "E: 1000,",
+                                                       f"E: {report.MC_STIFF_E},"),
+                                   '"-0.05*t"', f'"-{report.MC_STIFF_PUSH}*t"')
+    else:
+        with open(os.path.join(ROOT, "examples", example)) as f:
+            text = f.read()
+    return re.sub(r"vtk: \{every: \d+\}", "vtk: {every: 0}", text)
+
 
 SUMMARY = re.compile(r"finished: (\d+) steps, (\d+) Newton iterations \(at most (\d+) in a step\), "
                      r"(\d+) cut-backs, wall time ([\d.]+) s")
@@ -60,10 +88,10 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for label, example, column in MODELS:
-            with open(os.path.join(ROOT, "examples", example)) as f:
-                text = re.sub(r"vtk: \{every: \d+\}", "vtk: {every: 0}", f.read())
+            text = model_text(example)
             zero = text.replace("predictor: extrapolated, ", "")
             variants = {"zero": zero,
+                        "plastic": PLASTIC_SIDE.sub(r"\1 surface_tangent: plastic,", zero),
                         "extrapolated": zero.replace("newton: {", "newton: {predictor: extrapolated, ")}
             result = {}
             for name, model in variants.items():
@@ -76,40 +104,49 @@ def main():
                     walls.append(summary[4])
                     first = first or (summary, history, "")
                 result[name] = (first, statistics.median(walls) if walls else float("nan"))
-            (s0, h0, f0), w0 = result["zero"]
-            (s1, h1, f1), w1 = result["extrapolated"]
-            difference = float("nan")
-            if s0 and s1 and len(h0) == len(h1):
-                scale = np.max(np.abs(h0[column]))
-                difference = float(np.max(np.abs(h0[column] - h1[column])) / scale)
-            rows.append((label, example, s0, w0, f0, s1, w1, f1, difference))
-            print(label, s0, w0, s1, w1, difference, flush=True)
+            (s0, h0, _), _ = result["zero"]
+            differences = {}
+            for name, ((s, h, _), _) in result.items():
+                differences[name] = float("nan")
+                if s0 and s and len(h0) == len(h):
+                    scale = np.max(np.abs(h0[column]))
+                    differences[name] = float(np.max(np.abs(h0[column] - h[column])) / scale)
+            rows.append((label, example, result, differences))
+            print(label, {k: (v[0][0], v[1]) for k, v in result.items()}, differences, flush=True)
     cpu = "unknown"
     with open("/proc/cpuinfo") as f:
         for line in f:
             if line.startswith("model name"):
                 cpu = line.split(":", 1)[1].strip()
                 break
-    lines = ["# Newton's first iterate: zero against extrapolated", "",
+    lines = ["# Newton's first iterate: zero, zero with the plastic side's tangent on the surface, "
+             "and extrapolated", "",
              "Generated by `bench/newton_predictor.py` "
              f"({args.repetitions} runs of each, the median wall time; `geompm run -t 1`, VTK "
              f"off; {cpu}, 2 cores, load average {open('/proc/loadavg').read().split()[0]} at the "
-             "end). Each example as it is, and with `predictor: extrapolated` added to every "
-             "phase's `newton`. 'Load history' is the largest difference of the load column over "
-             "the run, relative to its largest value, where both runs took the same steps.", "",
-             "| model | steps | Newton iterations | most in a step | cut-backs | wall time | "
-             "extrapolated: steps | iterations | most in a step | cut-backs | wall time | "
+             "end). Each model as it is (a zero start), with `surface_tangent: plastic` added to "
+             "its soil (docs/materials.md §1.7), and with `predictor: extrapolated` added to every "
+             "phase's `newton` instead. 'Load history' is the largest difference of the load column "
+             "from the zero start's over the run, relative to its largest value, where both runs "
+             "took the same steps. Each cell: steps / Newton iterations / the most in a step / "
+             "cut-backs / median wall time.", "",
+             "| model | zero start | plastic side on the surface | load history | extrapolated | "
              "load history |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for label, example, s0, w0, f0, s1, w1, f1, difference in rows:
-        def cells(s, w, failure):
-            if s is None:
-                return f"stopped: {failure} | | | | "
-            return f"{s[0]} | {s[1]} | {s[2]} | {s[3]} | {w:.1f} s"
-        lines.append(f"| {label} (`{example}`) | {cells(s0, w0, f0)} | {cells(s1, w1, f1)} | "
-                     + ("other steps" if difference != difference else
-                        "identical as printed" if difference == 0 else f"{difference:.1e}")
-                     + " |")
+             "|---|---|---|---|---|---|"]
+
+    def cells(entry):
+        (s, _, failure), w = entry
+        if s is None:
+            return f"stopped: {failure}"
+        return f"{s[0]} / {s[1]} / **{s[2]}** / {s[3]} / {w:.1f} s"
+
+    def history(d):
+        return ("other steps" if d != d else "identical as printed" if d == 0 else f"{d:.1e}")
+
+    for label, example, result, differences in rows:
+        lines.append(f"| {label} (`{example}`) | {cells(result['zero'])} | "
+                     f"{cells(result['plastic'])} | {history(differences['plastic'])} | "
+                     f"{cells(result['extrapolated'])} | {history(differences['extrapolated'])} |")
     with open(os.path.join(ROOT, "bench", "predictor_timings.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote bench/predictor_timings.md")

@@ -127,6 +127,8 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
         material.model = value.text();
       else if (key == "formulation")
         material.formulation = read_formulation(value);
+      else if (key == "surface_tangent")  // a word in the file, a number for the material
+        material.parameters[key] = value.choice({"elastic", "plastic"}) == "plastic" ? 1.0 : 0.0;
       else
         material.parameters[key] = value.number();
     }

@@ -45,7 +45,7 @@ MohrCoulomb::MohrCoulomb(const Parameters& p)
 
 std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
   ParameterReader r("mohr_coulomb", map,
-                    {"c", "phi", "psi", "E", "nu", "density", "tension_cutoff"});
+                    {"c", "phi", "psi", "E", "nu", "density", "tension_cutoff", "surface_tangent"});
   Parameters p;
   p.cohesion = ParameterReader::non_negative("c", r.required("c"));
   p.friction_angle = r.required("phi");
@@ -65,6 +65,7 @@ std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
   p.youngs_modulus = ParameterReader::positive("E", r.required("E"));
   p.poisson_ratio = ParameterReader::poisson_ratio("nu", r.required("nu"));
   p.density = ParameterReader::non_negative("density", r.optional("density", 0));
+  p.surface_tangent = r.surface_tangent();
 
   const double apex = p.friction_angle > 0 ? p.cohesion / std::tan(radians(p.friction_angle))
                                            : std::numeric_limits<double>::infinity();
@@ -112,7 +113,8 @@ double MohrCoulomb::strain_energy(const Mat3& eps) const {
 }
 
 PrincipalReturn MohrCoulomb::principal_return(const Vec3& trial_principal_strain) const {
-  return return_to_yield_planes(trial_principal_strain, principal_elasticity_, planes_, faces_);
+  return return_to_yield_planes(trial_principal_strain, principal_elasticity_, planes_, faces_,
+                                p_.surface_tangent);
 }
 
 void MohrCoulomb::update(const Mat3& eps, const InternalVariables& internal_n,

@@ -31,6 +31,7 @@ class MohrCoulomb final : public Material {
     double density = 0;
     double tension_cutoff = 0;  // largest principal stress, <= c / tan(phi)
     bool has_tension_cutoff = false;
+    SurfaceTangent surface_tangent = SurfaceTangent::elastic;  // docs/materials.md §1.7
   };
 
   // Internal variables (docs/materials.md §3.5).

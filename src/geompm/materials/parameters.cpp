@@ -40,6 +40,15 @@ double ParameterReader::optional(const std::string& key, double fallback) const 
   return it == p_.end() ? fallback : it->second;
 }
 
+SurfaceTangent ParameterReader::surface_tangent() const {
+  const double v = optional("surface_tangent", 0);
+  if (v != 0 && v != 1)
+    throw ParameterError(
+        "surface_tangent",
+        fmt::format("'surface_tangent' must be elastic (0) or plastic (1), got {}", v));
+  return v == 1 ? SurfaceTangent::plastic : SurfaceTangent::elastic;
+}
+
 double ParameterReader::positive(const std::string& key, double v) {
   if (!(v > 0)) throw ParameterError(key, fmt::format("'{}' must be > 0, got {}", key, v));
   return v;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "geompm/materials/material.hpp"
+#include "geompm/materials/principal_return.hpp"
 
 namespace geompm {
 
@@ -16,6 +17,9 @@ class ParameterReader {
 
   double required(const std::string& key) const;
   double optional(const std::string& key, double fallback) const;
+  /// `surface_tangent` (docs/materials.md §1.7): 0 elastic (the default), 1 plastic; the model
+  /// reader writes these for the words `elastic` and `plastic`.
+  SurfaceTangent surface_tangent() const;
 
   /// Checks on a value just read; each throws ParameterError naming the key.
   static double positive(const std::string& key, double v);

@@ -95,6 +95,17 @@ double kkt_violation(const ActiveSetReturn& r, const TrialState& t,
   return v;
 }
 
+// Eq. M.6: tau = tau_tr - D^e G A^-1 (N^T tau_tr - k), so
+// d tau / d eps_tr = D^e - D^e G A^-1 N^T D^e, with N, G the normals and flows of the face.
+void subtract_plastic_stiffness(const ActiveSetReturn& r, const TrialState& t,
+                                std::span<const YieldPlane> planes, const Mat3& de, Mat3& tangent) {
+  for (int i = 0; i < r.count; ++i) {
+    const Vec3 normal_de = de * planes[r.plane[i]].normal;  // D^e symmetric: (n^T D^e)^T
+    for (int j = 0; j < r.count; ++j)
+      tangent -= r.a_inverse(j, i) * t.elastic_flow[r.plane[j]] * normal_de.transpose();
+  }
+}
+
 }  // namespace
 
 SymmetricEigen principal_descending(const Mat3& a) {
@@ -121,7 +132,8 @@ std::vector<unsigned> active_sets_up_to_three(int plane_count) {
 
 PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& de,
                                        std::span<const YieldPlane> planes,
-                                       std::span<const unsigned> candidates) {
+                                       std::span<const unsigned> candidates,
+                                       SurfaceTangent surface_tangent) {
   assert(planes.size() <= static_cast<std::size_t>(max_yield_planes));
   PrincipalReturn out;
   TrialState t;
@@ -135,13 +147,30 @@ PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& de,
   }
   const double tolerance = kkt_tolerance * scale;
   for (std::size_t k = 0; k < planes.size(); ++k) elastic = elastic && t.f[k] <= tolerance;
+  ActiveSetReturn best, candidate;
   if (elastic) {
     out.stress = t.stress;
     out.tangent = de;
+    // On the surface (the stress of a converged plastic step, met again by a zero increment):
+    // the update is not differentiable there, and either side's derivative is a valid Newton
+    // tangent (a generalised Jacobian). The plastic side's, the tangent of eq. M.6 with the
+    // multipliers zero on the largest face of planes at the surface, lets the first iterate of
+    // a step from a zero start flow plastically where the last step did, instead of loading the
+    // whole plastic zone elastically (docs/materials.md §1.7).
+    if (surface_tangent == SurfaceTangent::elastic) return out;
+    unsigned on_surface = 0;
+    for (std::size_t k = 0; k < planes.size(); ++k)
+      if (t.f[k] >= -tolerance) on_surface |= 1u << k;
+    if (on_surface == 0) return out;
+    for (auto face = candidates.rbegin(); face != candidates.rend(); ++face) {
+      if ((*face & ~on_surface) != 0 || !solve_active_set(*face, t, planes, candidate)) continue;
+      out.active = *face;
+      subtract_plastic_stiffness(candidate, t, planes, de, out.tangent);
+      break;
+    }
     return out;
   }
 
-  ActiveSetReturn best, candidate;
   unsigned best_mask = 0;
   for (unsigned mask : candidates) {
     if (!solve_active_set(mask, t, planes, candidate)) continue;
@@ -160,15 +189,10 @@ PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& de,
 
   out.active = best_mask;
   out.stress = best.stress;
-  // Eq. M.6: tau = tau_tr - D^e G A^-1 (N^T tau_tr - k), so
-  // d tau / d eps_tr = D^e - D^e G A^-1 N^T D^e, with N, G the normals and flows of the face.
   out.tangent = de;
-  for (int i = 0; i < best.count; ++i) {
-    const Vec3 normal_de = de * planes[best.plane[i]].normal;  // D^e symmetric: (n^T D^e)^T
-    for (int j = 0; j < best.count; ++j)
-      out.tangent -= best.a_inverse(j, i) * t.elastic_flow[best.plane[j]] * normal_de.transpose();
+  subtract_plastic_stiffness(best, t, planes, de, out.tangent);
+  for (int i = 0; i < best.count; ++i)
     out.plastic_strain += best.multiplier(i) * planes[best.plane[i]].flow;
-  }
   return out;
 }
 

@@ -49,6 +49,12 @@ Mat3 principal_elasticity(double lambda, double mu);
 /// (planes before edges before vertices), in plane order within a size.
 std::vector<unsigned> active_sets_up_to_three(int plane_count);
 
+/// Which one-sided derivative the return reports for a trial state on the surface (no plane
+/// violated, some within the Kuhn-Tucker tolerance), where the update is not differentiable:
+/// the elastic side's, D^e, or the plastic side's, eq. M.6 on the face of the planes at the
+/// surface (docs/materials.md §1.7).
+enum class SurfaceTangent { elastic, plastic };
+
 /// The return to the yield planes (at most max_yield_planes) of principal trial strains sorted
 /// eps_1 >= eps_2 >= eps_3.
 /// Elastic when no plane is violated; otherwise the first set of `candidates` whose return
@@ -57,7 +63,8 @@ std::vector<unsigned> active_sets_up_to_three(int plane_count);
 /// is taken, so the update always returns.
 PrincipalReturn return_to_yield_planes(const Vec3& trial_strain, const Mat3& elasticity,
                                        std::span<const YieldPlane> planes,
-                                       std::span<const unsigned> candidates);
+                                       std::span<const unsigned> candidates,
+                                       SurfaceTangent on_surface = SurfaceTangent::elastic);
 
 /// The equivalent plastic strain of a principal plastic strain increment, sqrt(2/3 de_p : de_p)
 /// (eq. M.8): the von Mises measure, which for an isochoric (Tresca) flow is the usual one.

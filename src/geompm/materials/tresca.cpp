@@ -29,9 +29,9 @@ constexpr std::array<unsigned, 3> tresca_faces = {Tresca::main_plane, Tresca::ri
 Tresca::Tresca(const Parameters& p) : p_(p) {}
 
 std::unique_ptr<Material> Tresca::create(const ParameterMap& map) {
-  ParameterReader r(
-      "tresca", map,
-      {"E", "E_over_su", "nu", "density", "su", "su_gradient", "su_reference_level", "su_min"});
+  ParameterReader r("tresca", map,
+                    {"E", "E_over_su", "nu", "density", "su", "su_gradient", "su_reference_level",
+                     "su_min", "surface_tangent"});
   Parameters p;
   const bool has_modulus = map.count("E") > 0, has_ratio = map.count("E_over_su") > 0;
   if (has_modulus == has_ratio)
@@ -52,6 +52,7 @@ std::unique_ptr<Material> Tresca::create(const ParameterMap& map) {
   p.reference_level = r.optional("su_reference_level", 0);
   if (map.count("su_min"))
     p.minimum_strength = ParameterReader::positive("su_min", r.required("su_min"));
+  p.surface_tangent = r.surface_tangent();
   return std::make_unique<Tresca>(p);
 }
 
@@ -113,7 +114,8 @@ PrincipalReturn Tresca::principal_return(const Vec3& trial_principal_strain,
   const Mat3 de =
       principal_elasticity(lame_lambda(E, p_.poisson_ratio), shear_modulus(E, p_.poisson_ratio));
   const auto planes = tresca_planes(su);
-  return return_to_yield_planes(trial_principal_strain, de, planes, tresca_faces);
+  return return_to_yield_planes(trial_principal_strain, de, planes, tresca_faces,
+                                p_.surface_tangent);
 }
 
 void Tresca::update(const Mat3& eps, const InternalVariables& internal_n, StressUpdate& out) const {

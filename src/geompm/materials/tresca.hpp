@@ -33,6 +33,7 @@ class Tresca final : public Material {
     double strength_gradient = 0;  // d s_u / d depth
     double reference_level = 0;    // vertical coordinate where s_u = strength
     double minimum_strength = 0;   // floor of s_u; 0 for none
+    SurfaceTangent surface_tangent = SurfaceTangent::elastic;  // docs/materials.md §1.7
   };
 
   // Internal variables (docs/materials.md §2.4).

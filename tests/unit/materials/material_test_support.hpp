@@ -15,8 +15,10 @@ namespace geompm::test_support {
 /// A Mohr-Coulomb soil; the tension cut-off is `cutoff` when given (>= 0), otherwise at the apex
 /// c / tan(phi) (none for phi = 0).
 inline MohrCoulomb make_mohr_coulomb(double c, double phi, double psi, double E, double nu,
-                                     double cutoff = -1) {
+                                     double cutoff = -1,
+                                     SurfaceTangent surface = SurfaceTangent::elastic) {
   MohrCoulomb::Parameters p;
+  p.surface_tangent = surface;
   p.cohesion = c;
   p.friction_angle = phi;
   p.dilation_angle = psi;

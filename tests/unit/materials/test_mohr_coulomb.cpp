@@ -22,8 +22,9 @@ using namespace geompm::test_support;
 
 constexpr double c = 10.0, E = 1e4, nu = 0.3;
 
-MohrCoulomb make_soil(double phi, double psi, double cutoff = -1) {
-  return make_mohr_coulomb(c, phi, psi, E, nu, cutoff);
+MohrCoulomb make_soil(double phi, double psi, double cutoff = -1,
+                      SurfaceTangent surface = SurfaceTangent::elastic) {
+  return make_mohr_coulomb(c, phi, psi, E, nu, cutoff, surface);
 }
 
 const Mat3 de = principal_elasticity(lame_lambda(E, nu), shear_modulus(E, nu));
@@ -256,6 +257,45 @@ TEST(MohrCoulomb, TangentMatchesFiniteDifferencesInEveryRegion) {
         soil.update(eps, {}, out);
         const Tensor4 fd = finite_difference_tangent(soil, eps, {}, 1e-8);
         EXPECT_LT(tangent_error(fd, out.tangent, elastic), 1e-6);
+      }
+  }
+}
+
+// A trial state exactly on a face (the stress of a converged plastic step, met again by a zero
+// increment) keeps its stress; with `surface_tangent: plastic` its tangent is the plastic side's
+// (docs/materials.md §1.7): the tangent (M.6) of the trial states beyond that face, which depends
+// on the face only; by default the elastic one.
+TEST(MohrCoulomb, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
+  std::mt19937 rng(27);
+  for (const Case& cs : cases) {
+    const MohrCoulomb soil = make_soil(cs.phi, cs.psi, cs.cutoff, SurfaceTangent::plastic);
+    const MohrCoulomb by_default = make_soil(cs.phi, cs.psi, cs.cutoff);
+    const Surface s(soil, cs.phi, cs.cutoff >= 0 ? cs.cutoff : soil.apex());
+    for (Face face : cs.faces)
+      for (int sample = 0; sample < 6; ++sample) {
+        SCOPED_TRACE(::testing::Message() << "phi " << cs.phi << " psi " << cs.psi << " cutoff "
+                                          << cs.cutoff << " face " << static_cast<int>(face));
+        const FacePoint f = random_face_point(face, s, rng);
+        const PrincipalReturn on =
+            soil.principal_return(sorted_descending(de.inverse() * f.stress));
+        const PrincipalReturn beyond =
+            soil.principal_return(sorted_descending(trial_for(soil, f, rng)));
+        EXPECT_NE(on.active, 0u);
+        EXPECT_LT((on.stress - f.stress).norm(), 1e-10 * stress_scale(f.stress));
+        EXPECT_EQ(on.plastic_strain, Vec3::Zero());
+        EXPECT_LT((on.tangent - beyond.tangent).norm(), 1e-10 * de.norm());
+        EXPECT_GT((on.tangent - de).norm(), 1e-2 * de.norm());
+        // The whole update: the trial stress, with a tangent that is not the elastic one.
+        StressUpdate out;
+        const Mat3 eps = with_axes(de.inverse() * f.stress, random_rotation(rng));
+        soil.update(eps, {}, out);
+        EXPECT_LT((out.kirchhoff - (lame_lambda(E, nu) * eps.trace() * Mat3::Identity() +
+                                    2 * shear_modulus(E, nu) * eps))
+                      .norm(),
+                  1e-10 * stress_scale(f.stress));
+        EXPECT_GT((out.tangent - elastic).norm(), 1e-2 * elastic.norm());
+        by_default.update(eps, {}, out);
+        EXPECT_EQ(out.tangent, elastic);
       }
   }
 }

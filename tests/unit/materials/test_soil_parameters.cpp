@@ -56,6 +56,9 @@ TEST(SoilParameters, MohrCoulombRanges) {
   EXPECT_EQ(error_key("mohr_coulomb", with(sand, "tension_cutoff", 1)), "(no error)");
   EXPECT_EQ(error_key("mohr_coulomb", sand), "(no error)");
   EXPECT_EQ(error_key("mohr_coulomb", without(sand, "psi")), "(no error)");  // psi = 0
+  // docs/materials.md §1.7: 0 elastic, 1 plastic (the model reader's numbers for the words).
+  EXPECT_EQ(error_key("mohr_coulomb", with(sand, "surface_tangent", 1)), "(no error)");
+  EXPECT_EQ(error_key("mohr_coulomb", with(sand, "surface_tangent", 2)), "surface_tangent");
 }
 
 TEST(SoilParameters, TrescaRanges) {
@@ -71,6 +74,8 @@ TEST(SoilParameters, TrescaRanges) {
   EXPECT_EQ(error_key("tresca", with(clay, "su_min", 0)), "su_min");
   EXPECT_EQ(error_key("tresca", with(clay, "nu", 0.5)), "nu");
   EXPECT_EQ(error_key("tresca", with(clay, "phi", 0)), "phi");  // unknown key
+  EXPECT_EQ(error_key("tresca", with(clay, "surface_tangent", 0)), "(no error)");
+  EXPECT_EQ(error_key("tresca", with(clay, "surface_tangent", 0.5)), "surface_tangent");
   EXPECT_EQ(error_key("tresca", clay), "(no error)");
 }
 
