@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything geompm needs on Debian 12 (idempotent, non-interactive).
+#   bash scripts/setup.sh            build, tests and examples
+#   bash scripts/setup.sh --report   and what scripts/validation_report.py needs for its plots
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
@@ -16,6 +18,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-meshio         # independent VTU reader used by the output test
 )
+case "${1:-}" in
+  --report) packages+=(python3-matplotlib) ;;  # the plots of docs/validation.md
+  "") ;;
+  *) echo "setup.sh: unknown option '$1' (expected --report or nothing)" >&2; exit 1 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
