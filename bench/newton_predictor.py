@@ -64,6 +64,17 @@ SUMMARY = re.compile(r"finished: (\d+) steps, (\d+) Newton iterations \(at most 
                      r"(\d+) cut-backs, wall time ([\d.]+) s")
 
 
+def short_failure(message):
+    """Where a run stopped and why, from geompm's 'run stopped: phase ..., the step at time T did
+    not converge with the smallest allowed time step (...): REASON; more' message."""
+    m = re.search(r"phase '([^']+)': the step at time ([\d.e+-]+) did not converge with the "
+                  r"smallest allowed time step \([^)]*\): ([^;]*)", message)
+    if not m:
+        return message[:160]
+    phase, time, reason = m.groups()
+    return f"at t = {float(time):g} of phase '{phase}': {reason.strip()}"
+
+
 def run(binary, text, work, name):
     model = os.path.join(work, name + ".yaml")
     with open(model, "w") as f:
@@ -74,7 +85,9 @@ def run(binary, text, work, name):
     m = SUMMARY.search(res.stderr)
     history = np.genfromtxt(os.path.join(out, "history.csv"), delimiter=",", names=True)
     if not m:
-        return None, history, res.stderr.strip().splitlines()[-2][:160]
+        said = (res.stderr + res.stdout).strip().splitlines() or ["(no message)"]
+        stopped = [line for line in said if line.startswith("run stopped")]
+        return None, history, short_failure((stopped or said)[-1])
     steps, iterations, most, cutbacks, wall = m.groups()
     return (int(steps), int(iterations), int(most), int(cutbacks), float(wall)), history, ""
 
@@ -137,7 +150,7 @@ def main():
     def cells(entry):
         (s, _, failure), w = entry
         if s is None:
-            return f"stopped: {failure}"
+            return f"stopped {failure}"
         return f"{s[0]} / {s[1]} / **{s[2]}** / {s[3]} / {w:.1f} s"
 
     def history(d):

@@ -19,8 +19,9 @@ using namespace geompm::test_support;
 
 constexpr double su = 10.0, modulus_ratio = 500.0, nu = 0.49;
 
-Tresca make_clay() {
+Tresca make_clay(SurfaceTangent surface = SurfaceTangent::elastic) {
   Tresca::Parameters p;
+  p.surface_tangent = surface;
   p.modulus_to_strength = modulus_ratio;
   p.poisson_ratio = nu;
   p.strength = su;
@@ -73,6 +74,31 @@ TEST(Tresca, ReturnsToTheFaceTheTrialStateWasBuiltFrom) {
       EXPECT_LT((r.stress - f.stress).norm(), 1e-10 * (f.stress.norm() + su));
       EXPECT_NEAR(r.stress(0) - r.stress(2), 2 * su, 1e-10 * su);
       EXPECT_NEAR(r.plastic_strain.sum(), 0.0, 1e-14);  // isochoric flow
+    }
+}
+
+// A trial state exactly on a face keeps its stress; with `surface_tangent: plastic` the return
+// reports the face and its tangent (M.6), that of the trial states beyond the face; by default the
+// elastic one (docs/materials.md §1.7).
+TEST(Tresca, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
+  const Tresca clay = make_clay(SurfaceTangent::plastic), by_default = make_clay();
+  const InternalVariables internal = seeded(clay);
+  const Mat3 de = elasticity(internal[Tresca::modulus_index]);
+  std::mt19937 rng(12);
+  for (unsigned mask : {Tresca::main_plane, Tresca::right_edge, Tresca::left_edge})
+    for (int sample = 0; sample < 20; ++sample) {
+      const Face f = random_face(mask, rng);
+      const Vec3 on = sorted_descending(de.inverse() * f.stress);
+      const PrincipalReturn at = clay.principal_return(on, internal);
+      const PrincipalReturn beyond = clay.principal_return(
+          sorted_descending(trial_strain_for(f.stress, de, prism(su), mask, f.gamma)), internal);
+      EXPECT_EQ(at.active, mask);
+      EXPECT_LT((at.stress - f.stress).norm(), 1e-10 * (f.stress.norm() + su));
+      EXPECT_EQ(at.plastic_strain, Vec3::Zero());
+      EXPECT_LT((at.tangent - beyond.tangent).norm(), 1e-10 * de.norm());
+      const PrincipalReturn elastic = by_default.principal_return(on, internal);
+      EXPECT_EQ(elastic.active, 0u);
+      EXPECT_EQ(elastic.tangent, de);
     }
 }
 
