@@ -1871,8 +1871,9 @@ def section_frictional(args, work):
       "surface). Settlements are counted from the start of the push. Newton starts each step of "
       "the push from the last one extrapolated (`predictor: extrapolated`, docs/theory.md §4.5), "
       "which halves the iterations of the examples' pushes; a step whose extrapolated start fails "
-      "(after at most half of `max_iterations`, 10 here) is solved again from zero, and the "
-      "tables' 'Newton max' counts both attempts: up to 10 + 20 in a step that fell back.")
+      "(after half of `max_iterations`, 10 here, or later if it was converging superlinearly "
+      "then) is solved again from zero, and the tables' 'Newton max' counts both attempts: 30 "
+      "or more in a step that fell back.")
     w("")
     w("- **N_q** (`frictional_footing_nq.yaml`, smooth): weightless soil (density for the load shares, "
       "no gravity), surcharge q0 = 1 kPa as a `load` on the top row of soil points beside the footing; "

@@ -93,6 +93,13 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
           fmt::format("no convergence in {} iterations (relative residual {:.3e})", k, relative);
       return result;
     }
+    if (settings.patience > 0 && k >= settings.patience &&
+        !(relative < superlinear_contraction * result.residuals[k - 1])) {
+      result.failure =
+          fmt::format("not converging superlinearly after {} iterations (relative residual {:.3e})",
+                      k, relative);
+      return result;
+    }
     try {
       if (!analysed) {
         solver.analyze(tangent);

@@ -27,8 +27,18 @@ class NonlinearProblem {
   virtual Index largest_residual_unknown() const { return -1; }
 };
 
+/// A residual this much smaller than the one before marks Newton's superlinear (quadratic) regime:
+/// while points still switch between elastic and plastic the residual falls by factors of about
+/// 1.5-6 an iteration (measured on the N_q strip of validation.md §9), in the quadratic regime
+/// by far more (docs/theory.md §4.5).
+inline constexpr double superlinear_contraction = 0.1;
+
 struct NewtonSettings {
   int max_iterations = 15;
+  /// If > 0: after this many iterations Newton goes on (up to max_iterations) only while it
+  /// converges superlinearly, each residual below superlinear_contraction times the one before;
+  /// a start that has not reached Newton's quadratic regime by then gives up early.
+  int patience = 0;
   double residual_tolerance = 1e-8;
   double displacement_tolerance = 1e-8;
   double divergence_factor =

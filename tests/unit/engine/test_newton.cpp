@@ -91,5 +91,42 @@ TEST(NewtonTangentCheck, AWrongTangentIsReportedAndSlowsNewton) {
   EXPECT_GT(result.iterations, consistent.iterations);
 }
 
+// Patience (the extrapolated start's budget, docs/theory.md §4.5): after `patience` iterations
+// Newton goes on only while each residual is below a tenth of the one before. On the arctangent
+// from x0 = 0.5 the consistent tangent converges quadratically (each residual far below a tenth of
+// the one before) and is let run past the patience; a tangent 30 % too stiff converges linearly
+// (each residual about 0.23 of the one before) and gives up at the patience.
+NewtonResult solve_with_patience(double tangent_factor, int patience) {
+  Arctangent problem(tangent_factor);
+  auto solver = create_linear_solver("sparse_lu");
+  NewtonSettings settings;
+  settings.max_iterations = 60;
+  settings.residual_tolerance = 1e-14;
+  settings.displacement_tolerance = 1e-14;
+  settings.patience = patience;
+  Vector x = Vector::Constant(1, 0.5);
+  SparseMatrix tangent;
+  return solve_newton(problem, *solver, settings, x, tangent);
+}
+
+TEST(NewtonPatience, QuadraticConvergenceGoesOnPastThePatience) {
+  const NewtonResult without = solve_with_patience(1.0, 0);
+  ASSERT_TRUE(without.converged) << without.failure;
+  ASSERT_GE(without.iterations, 3);
+  const NewtonResult with = solve_with_patience(1.0, 2);
+  ASSERT_TRUE(with.converged) << with.failure;
+  EXPECT_EQ(with.iterations, without.iterations);
+}
+
+TEST(NewtonPatience, LinearConvergenceGivesUpAtThePatience) {
+  const NewtonResult without = solve_with_patience(1.3, 0);
+  ASSERT_TRUE(without.converged) << without.failure;
+  ASSERT_GT(without.iterations, 4);
+  const NewtonResult with = solve_with_patience(1.3, 4);
+  EXPECT_FALSE(with.converged);
+  EXPECT_EQ(with.iterations, 4);
+  EXPECT_NE(with.failure.find("superlinearly"), std::string::npos) << with.failure;
+}
+
 }  // namespace
 }  // namespace geompm
