@@ -2251,6 +2251,15 @@ def ngamma_phi20_loose(runs, levels, SG):
           + ", ".join(f"{(mean[a][0] / NG20_ROUGH - 1) / (mean[b][0] / NG20_ROUGH - 1):.2f} "
                       f"(h = B/{2 * a} to B/{2 * b})" for a, b in zip(have, have[1:]))
           + " (2 for first-order convergence).")
+    if levels[-1] not in mean:
+        w(f"h = B/{2 * levels[-1]} does not reach its window. An earlier run of the same model "
+          "(2026-11-22, before the extrapolated start was let run on while converging "
+          "superlinearly, docs/theory.md §4.5) passed the stop at 0.0022 B and levelled off at "
+          "3.48–3.65 before h/4 (mean 3.58, +26 %); with h = B/20 and B/40 (then 5.67 and 4.30) "
+          "its mean extrapolated to 2.80 (−1.2 %) at an observed order of 0.94, within 2.40–3.07 "
+          "for means moved by ±0.8 %: consistent with Martin's value, not resolving it to 5 %. "
+          "This run, and one pushed 0.003 B before that rule, stopped at the same surface node "
+          "beside the footing's edge (x = 0.55 B) at 0.0022 B.")
     fine = have[-3:]
     if len(fine) == 3 and fine[0] * 4 == fine[2] and (r := richardson([mean[n][0] for n in fine])):
         order, value = r
@@ -2281,11 +2290,13 @@ def ngamma_phi20_loose(runs, levels, SG):
           + (f". Moving each of the three means by ±{delta * 100:.1f} % moves the extrapolation "
              f"within {band[0]:.2f}–{band[1]:.2f} ({(band[0] / NG20_ROUGH - 1) * 100:+.1f} to "
              f"{(band[1] / NG20_ROUGH - 1) * 100:+.1f} %)"
-             + (": the extrapolation agrees with Martin's value but does not resolve it to 5 %"
-                if not resolved else "") if band else "")
-          + ". What this shows is the displacement formulation's limit load converging to N_γ "
-          "at the order of the locking; a formulation that does not lock (the field's pressure, "
-          "below) is what would reach it on a usable mesh.")
+             + ((": the extrapolation agrees with Martin's value but does not resolve it to 5 %"
+                 if band[0] <= NG20_ROUGH <= band[1] else
+                 ": Martin's value lies outside it, so these meshes are not yet in the range "
+                 "where the error falls at a steady order") if not resolved else "")
+             if band else "")
+          + ". A formulation that does not lock (the field's pressure, below) is what would reach "
+          "N_γ on a usable mesh.")
     return lines
 
 
@@ -2318,10 +2329,11 @@ def non_associated_paragraph(runs, SQ, SG, corr):
 
 
 FRICTIONAL_DISCUSSION = (
-    "**N_γ: not reached**, rough or smooth: no run levels off before it stops, so no limit load is "
-    "measured. The rough footing's load climbs past Martin's 14.75 and on (table), and at a fixed "
-    "settlement it falls only slowly with h; the runs stop when a point's volume becomes ≤ 0 or "
-    "Newton fails at the smallest step, after 0.003–0.02 B. The smooth footing is not smooth enough "
+    "**N_γ: not reached**, rough or smooth: no run levels off, so no limit load is measured. The "
+    "rough footing's load climbs past Martin's 14.75 and on (table; on h = B/10, the one run that "
+    "finishes its push, to more than twice it), and at a fixed settlement it falls only slowly with "
+    "h; the other runs stop when a point's volume becomes ≤ 0 or Newton fails at the smallest step "
+    "(table, 'end'). The smooth footing is not smooth enough "
     "to tell the two references apart: up to where it stops its curve follows the rough one (within "
     "a few % at 0.004 B), where the exact solutions differ by a factor of two (7.65 against 14.75); "
     "the driven top row of soil points lies h/4 below the surface and shares its nodes with the soil "
