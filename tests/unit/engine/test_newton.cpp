@@ -30,17 +30,28 @@ class Arctangent final : public NonlinearProblem {
   double tangent_factor_;
 };
 
-NewtonResult solve_from(double x0, int halvings, Vector& x) {
-  Arctangent problem;
+// Newton on the arctangent from x0 with a tangent `tangent_factor` times the consistent one.
+NewtonResult solve_arctangent(double tangent_factor, const NewtonSettings& settings, double x0,
+                              Vector& x) {
+  Arctangent problem(tangent_factor);
   auto solver = create_linear_solver("sparse_lu");
-  NewtonSettings settings;
-  settings.max_iterations = 30;
-  settings.residual_tolerance = 1e-12;
-  settings.displacement_tolerance = 1e-12;
-  settings.max_halvings = halvings;
   x = Vector::Constant(1, x0);
   SparseMatrix tangent;
   return solve_newton(problem, *solver, settings, x, tangent);
+}
+
+NewtonSettings settings_to(double tolerance, int max_iterations) {
+  NewtonSettings settings;
+  settings.max_iterations = max_iterations;
+  settings.residual_tolerance = tolerance;
+  settings.displacement_tolerance = tolerance;
+  return settings;
+}
+
+NewtonResult solve_from(double x0, int halvings, Vector& x) {
+  NewtonSettings settings = settings_to(1e-12, 30);
+  settings.max_halvings = halvings;
+  return solve_arctangent(1.0, settings, x0, x);
 }
 
 TEST(NewtonBacktracking, PlainNewtonDivergesOnTheArctangent) {
@@ -58,16 +69,9 @@ TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
 }
 
 NewtonResult solve_checked(double tangent_factor, Vector& x) {
-  Arctangent problem(tangent_factor);
-  auto solver = create_linear_solver("sparse_lu");
-  NewtonSettings settings;
-  settings.max_iterations = 60;
-  settings.residual_tolerance = 1e-10;
-  settings.displacement_tolerance = 1e-10;
+  NewtonSettings settings = settings_to(1e-10, 60);
   settings.tangent_check = 1e-6;
-  x = Vector::Constant(1, 0.5);
-  SparseMatrix tangent;
-  return solve_newton(problem, *solver, settings, x, tangent);
+  return solve_arctangent(tangent_factor, settings, 0.5, x);
 }
 
 TEST(NewtonTangentCheck, AConsistentTangentMatchesTheFiniteDifference) {
@@ -97,16 +101,10 @@ TEST(NewtonTangentCheck, AWrongTangentIsReportedAndSlowsNewton) {
 // the one before) and is let run past the patience; a tangent 30 % too stiff converges linearly
 // (each residual about 0.23 of the one before) and gives up at the patience.
 NewtonResult solve_with_patience(double tangent_factor, int patience) {
-  Arctangent problem(tangent_factor);
-  auto solver = create_linear_solver("sparse_lu");
-  NewtonSettings settings;
-  settings.max_iterations = 60;
-  settings.residual_tolerance = 1e-14;
-  settings.displacement_tolerance = 1e-14;
+  NewtonSettings settings = settings_to(1e-14, 60);
   settings.patience = patience;
-  Vector x = Vector::Constant(1, 0.5);
-  SparseMatrix tangent;
-  return solve_newton(problem, *solver, settings, x, tangent);
+  Vector x;
+  return solve_arctangent(tangent_factor, settings, 0.5, x);
 }
 
 TEST(NewtonPatience, QuadraticConvergenceGoesOnPastThePatience) {
