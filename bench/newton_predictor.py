@@ -47,7 +47,8 @@ PLASTIC_SIDE = re.compile(r"(model: (?:mohr_coulomb|tresca),)")
 
 def model_text(example):
     if example.startswith(STIFF):
-        sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        if os.path.join(ROOT, "scripts") not in sys.path:
+            sys.path.insert(0, os.path.join(ROOT, "scripts"))
         import validation_report as report
         n = int(example[len(STIFF):])
         text = report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml")

@@ -2189,7 +2189,8 @@ def last_third(r, scale, end=math.inf):
 
 def ngamma_phi20_loose(runs, levels, SG):
     """The phi = 20 deg N_gamma runs with Newton's test on the corrections relaxed: how far they
-    go, and the mean loads of the finished runs over the last third of their pushes by mesh."""
+    go, and by mesh the mean load over the last third of its window (the push, up to h/4) from
+    a run that reached the window's end."""
     lines = []
     w = lines.append
 
@@ -2241,7 +2242,7 @@ def ngamma_phi20_loose(runs, levels, SG):
     if same:
         w("Up to where the first of its two runs stops, the relaxed test changes the mean load over "
           "the last third of that push by " + ", ".join(same) + ", and the load at a single "
-          f"settlement by up to {largest * 100:.1f} % (the noise of the backtracking steps).")
+          f"settlement by up to {largest * 100:.1f} %.")
     if mean:
         w("Over the last third of each mesh's window (its push, up to h/4) the load lies within "
           + "; ".join(v for _, v in mean.values()) + ".")
