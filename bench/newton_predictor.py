@@ -25,6 +25,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Models derived from the examples as docs/validation.md derives them: `stiff_strip:n` is the c-phi
 # strip's rigid-plastic limit of §8 (E = 5e4 c, pushed 0.002 B) on n cells under the half-width.
 STIFF = "stiff_strip:"
+# `tresca_stiff:kind:n`: the Tresca strip footing `kind` (rough: steel block, smooth, rigid: rough
+# rigid footing) in the rigid-plastic limit of §5 (E = 1e4 s_u, pushed 0.005 B), from a zero start.
+TRESCA_STIFF = "tresca_stiff:"
 
 # (label, example, load column): plastic runs with a mechanism that carries over from step to step.
 MODELS = [
@@ -35,6 +38,9 @@ MODELS = [
     ("c–φ strip, rigid-plastic limit of validation §8, h = B/20", STIFF + "10", "force"),
     ("c–φ strip, rigid-plastic limit of validation §8, h = B/40", STIFF + "20", "force"),
     ("thick cylinder, Tresca, mixed p–u", "thick_cylinder/thick_cylinder.yaml", "force"),
+    ("strip, steel block, Tresca, mixed p–u, rigid-plastic limit of validation §5, h = B/40", TRESCA_STIFF + "rough:20", "force"),
+    ("strip, smooth rigid footing, Tresca, mixed p–u, rigid-plastic limit of validation §5, h = B/40", TRESCA_STIFF + "smooth:20", "force"),
+    ("strip, rough rigid footing, Tresca, mixed p–u, rigid-plastic limit of validation §5, h = B/40", TRESCA_STIFF + "rigid:20", "force"),
     ("strip, steel block, Tresca, mixed p–u", "strip_footing/strip_footing.yaml", "force"),
     ("strip, smooth rigid footing, Tresca, mixed p–u", "strip_footing/strip_footing_smooth.yaml", "force"),
     ("strip, rough rigid footing, Tresca, mixed p–u", "strip_footing/strip_footing_rigid_rough.yaml", "force"),
@@ -46,9 +52,13 @@ PLASTIC_SIDE = re.compile(r"(model: (?:mohr_coulomb|tresca),)")
 
 
 def model_text(example):
-    if example.startswith(STIFF):
-        if os.path.join(ROOT, "scripts") not in sys.path:
-            sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    if example.startswith((STIFF, TRESCA_STIFF)) and os.path.join(ROOT, "scripts") not in sys.path:
+        sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    if example.startswith(TRESCA_STIFF):
+        import validation_report as report
+        kind, n = example[len(TRESCA_STIFF):].split(":")
+        text = report.tresca_limit_text(report.STRIP_FILE[kind], int(n), extrapolate=False)
+    elif example.startswith(STIFF):
         import validation_report as report
         n = int(example[len(STIFF):])
         text = report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml")

@@ -282,6 +282,43 @@ TEST_F(RunPolicies, ThreadCountDoesNotChangeResults) {
   EXPECT_GE(compared, 2);
 }
 
+// newton.csv logs Newton's active set: the points on their yield surface at every iterate, and
+// how many switched between elastic and plastic since the iterate before. The thick Tresca
+// cylinder of examples/thick_cylinder is loaded monotonically, so its plastic zone (r < c,
+// Hill's solution) only grows from step to step.
+TEST_F(RunPolicies, NewtonLogsThePlasticPoints) {
+  const std::string model =
+      (fs::path(GEOMPM_SOURCE_DIR) / "examples/thick_cylinder/thick_cylinder.yaml").string();
+  const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", model});
+  ASSERT_TRUE(r.exited && r.exit_code == 0) << describe(r);
+  const Csv newton = read_csv(work() / "out" / "newton.csv");
+  ASSERT_TRUE(newton.problem.empty()) << newton.problem;
+  const auto step = newton.column("step"), iteration = newton.column("iteration");
+  const auto plastic = newton.column("plastic_points"), changes = newton.column("plastic_changes");
+  const auto converged = newton.column("converged");
+  ASSERT_EQ(plastic.size(), step.size());
+  double last_zone = 0.0;
+  int zones = 0;
+  for (std::size_t k = 0; k < step.size(); ++k) {
+    EXPECT_GE(plastic[k], 0.0);
+    if (iteration[k] == 0.0) {
+      EXPECT_EQ(changes[k], -1.0) << "nothing to compare an attempt's first iterate with";
+    } else {
+      // Every point that entered or left the zone is a change, so the zone's size moves by at
+      // most that many.
+      EXPECT_GE(changes[k], std::abs(plastic[k] - plastic[k - 1])) << "row " << k;
+    }
+    const bool last_of_step = k + 1 == step.size() || step[k + 1] != step[k];
+    if (last_of_step && converged[k] == 1.0) {
+      EXPECT_GE(plastic[k], last_zone) << "step " << step[k] << ": the zone shrank";
+      last_zone = plastic[k];
+      ++zones;
+    }
+  }
+  EXPECT_GE(zones, 10);
+  EXPECT_GT(last_zone, 0.0) << "the cylinder yields";
+}
+
 // (f)
 TEST(CommandLine, Version) {
   const fs::path here = fs::temp_directory_path();

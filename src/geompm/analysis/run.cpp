@@ -60,14 +60,17 @@ class OutputWriter {
         grid_series_(dir / "grid.pvd"),
         recorder_(model),
         history_(dir / "history.csv", recorder_.columns()),
-        newton_(dir / "newton.csv", {"step", "time", "dt", "iteration", "relative_residual",
-                                     "relative_correction", "converged", "largest_residual_node",
-                                     "largest_residual_unknown", "tangent_error"}) {}
+        newton_(dir / "newton.csv",
+                {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
+                 "converged", "largest_residual_node", "largest_residual_unknown", "tangent_error",
+                 "plastic_points", "plastic_changes"}) {}
 
   /// Every Newton attempt, converged or cut back: one row per iteration, with where the
-  /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation) and,
+  /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation),
   /// with `newton.tangent_check`, the tangent's error along the correction that follows (0 when
-  /// the check is off or no correction followed).
+  /// the check is off or no correction followed), and the points on their yield surface with
+  /// how many switched between elastic and plastic since the iterate before (-1 at an attempt's
+  /// first iterate).
   void newton_log(int step_number, double time, double dt, const StepResult& step) {
     const NewtonResult& newton = step.newton;
     for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
@@ -76,7 +79,9 @@ class OutputWriter {
       newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
                       k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
                       newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
-                      k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0});
+                      k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0,
+                      k < newton.active.size() ? double(newton.active[k].size) : -1.0,
+                      k < newton.active.size() ? double(newton.active[k].changed) : -1.0});
     }
   }
 

@@ -97,6 +97,20 @@ class LagrangianProblem final : public NonlinearProblem {
     return std::sqrt(sum);
   }
 
+  /// The points on their yield surface at the last evaluation, and how many of them changed
+  /// between elastic and plastic since the last call (newton.csv): where they keep switching,
+  /// Newton's tangent describes a different branch of the return at every iterate.
+  ActiveSet active_set() override {
+    const std::vector<char>& plastic = grid_.plastic_points();
+    ActiveSet set{0, last_plastic_.size() == plastic.size() ? 0 : -1};
+    for (std::size_t p = 0; p < plastic.size(); ++p) {
+      set.size += plastic[p];
+      if (set.changed >= 0) set.changed += plastic[p] != last_plastic_[p];
+    }
+    last_plastic_ = plastic;
+    return set;
+  }
+
   const Vector& internal_force() const { return f_int_; }
   /// The grid unknown with the largest out-of-balance force at the last admissible evaluation
   /// (-1 if the last evaluation turned a point inside out), and that force.
@@ -121,6 +135,7 @@ class LagrangianProblem final : public NonlinearProblem {
   Vector f_int_, inertia_;
   Index largest_dof_ = -1;
   double largest_value_ = 0.0;
+  std::vector<char> last_plastic_;
 };
 
 // A grid unknown as the mesh node it belongs to and what it is: displacement component 0..2
@@ -315,6 +330,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   second.halvings += failed.halvings;
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
+  put_in_front(second.active, failed.active, n);
   put_in_front(second.corrections, failed.corrections, n);
   if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
     put_in_front(second.tangent_errors, failed.tangent_errors, n);

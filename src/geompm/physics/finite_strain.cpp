@@ -25,6 +25,7 @@ bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& 
   material.update(trial_strain, internal_n, update);
   out.cauchy_stress = update.kirchhoff / out.jacobian;
   out.internal = update.internal;
+  out.plastic = !(update.elastic_strain == trial_strain);
   // An elastic update keeps the trial strain: b_e is the trial one, no second decomposition.
   out.elastic_left_cauchy_green =
       update.elastic_strain == trial_strain ? be_trial : symmetric_exp(2.0 * update.elastic_strain);

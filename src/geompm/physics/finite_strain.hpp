@@ -22,6 +22,9 @@ struct FiniteStrainState {
   Mat3 cauchy_stress;              // sigma = tau / J
   InternalVariables internal{};
   double jacobian = 1.0;  // J = det F
+  // The return mapping moved the trial state back to the yield surface (the point flows
+  // plastically in this iterate); false for an elastic update.
+  bool plastic = false;
   // a above (only when requested), restricted to the requested components: entry (c, d) is
   // a_{ij kl} with (i, j) the c-th and (k, l) the d-th requested pair (all nine in natural
   // order by default).

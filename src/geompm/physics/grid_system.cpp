@@ -174,6 +174,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   cell_fill_.assign(n_active, 0.0);
   cell_mixed_fill_.assign(n_active, 0.0);
   cell_size_.assign(n_points, 0.0);
+  plastic_.assign(n_points, 0);
   target_stiffness_.clear();
   point_reaction_.clear();
   force_law_acts_.clear();

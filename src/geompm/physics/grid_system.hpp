@@ -163,6 +163,9 @@ class GridSystem {
   /// u_a (the weights of set_point_force_law).
   Vec3 interpolate_at(const MaterialPoints& points, Index p, const Vec3& offset,
                       const Vector& nodal) const;
+  /// Per point (in the cell-sorted order of initialise()): 1 if the last internal_force returned
+  /// it to its yield surface, 0 if its update was elastic (Newton's active set, newton.csv).
+  const std::vector<char>& plastic_points() const { return plastic_; }
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
   bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
 
@@ -229,6 +232,7 @@ class GridSystem {
   /// with a cell's volume average and stretches its domain, eq. 12.7).
   void commit(Index p, const FiniteStrainState& state, double volume, const Mat3& stress,
               double own_volume, double volume_mismatch = 0.0) const {
+    plastic_[p] = state.plastic ? 1 : 0;  // each point by one thread only
     if (!commit_to_) return;
     commit_to_->volume_mismatch[p] = volume_mismatch;
     commit_to_->domain_stretch[p] *= std::pow(own_volume / volume, 1.0 / dim_);
@@ -250,6 +254,7 @@ class GridSystem {
   std::vector<double> cell_fill_;
   std::vector<double> cell_mixed_fill_;  // fraction covered by points of mixed materials
   std::vector<double> cell_size_;        // per point: size of its cell
+  mutable std::vector<char> plastic_;    // per point: plastic in the last evaluation
   std::vector<Index> node_to_active_, active_nodes_;
   std::vector<std::vector<Index>> colours_;  // positions in active_cells_
 

@@ -61,6 +61,8 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     }
     result.residuals.push_back(relative);
     result.largest.push_back(problem.largest_residual_unknown());
+    result.active.push_back(problem.active_set());
+    if (k == 0) result.active.back().changed = -1;  // against another solve's iterate
     if (!std::isfinite(relative)) {
       result.failure = "the residual is not finite";
       return result;
@@ -93,7 +95,9 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
           fmt::format("no convergence in {} iterations (relative residual {:.3e})", k, relative);
       return result;
     }
-    if (settings.patience > 0 && k >= settings.patience &&
+    // A residual already within tolerance is not given up on: only the size of the next
+    // correction is still to be seen, and it is converged, not stalling.
+    if (settings.patience > 0 && k >= settings.patience && !residual_ok &&
         !(relative < superlinear_contraction * result.residuals[k - 1])) {
       result.failure =
           fmt::format("not converging superlinearly after {} iterations (relative residual {:.3e})",

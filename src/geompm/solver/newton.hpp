@@ -12,6 +12,13 @@
 
 namespace geompm {
 
+/// Newton's active set at an iterate: for a nonsmooth residual (return mapping), the members on
+/// the nonsmooth side and how many switched since the iterate before. -1: not known.
+struct ActiveSet {
+  Index size = -1;
+  Index changed = -1;
+};
+
 class NonlinearProblem {
  public:
   virtual ~NonlinearProblem() = default;
@@ -25,6 +32,11 @@ class NonlinearProblem {
   /// The unknown with the largest residual at the last evaluation, in the problem's own
   /// numbering, or -1 if the problem does not say (for diagnostics only).
   virtual Index largest_residual_unknown() const { return -1; }
+  /// For diagnostics: the size of the active set of the last evaluation (in plasticity the
+  /// points on their yield surface) and how many members entered or left it since the last
+  /// call (-1 on the first call of a solve, or if the problem does not say). Called once per
+  /// iterate that Newton logs.
+  virtual ActiveSet active_set() { return {}; }
 };
 
 /// A residual this much smaller than the one before marks Newton's superlinear (quadratic) regime:
@@ -59,6 +71,7 @@ struct NewtonResult {
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()
+  std::vector<ActiveSet> active;    // per residual: the problem's active_set()
   /// With NewtonSettings::tangent_check, per correction: |(R(x + e dx) - R(x)) / e + R(x)| /
   /// |R(x)|, the tangent's relative error along dx (NaN where x + e dx was inadmissible).
   std::vector<double> tangent_errors;

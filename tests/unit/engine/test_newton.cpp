@@ -126,5 +126,25 @@ TEST(NewtonPatience, LinearConvergenceGivesUpAtThePatience) {
   EXPECT_NE(with.failure.find("superlinearly"), std::string::npos) << with.failure;
 }
 
+// A residual already within tolerance when the patience runs out, with only the correction's
+// test pending, is converged, not stalling: Newton goes on although it converges linearly.
+TEST(NewtonPatience, AConvergedResidualIsNotGivenUp) {
+  NewtonSettings settings = settings_to(2e-3, 60);
+  settings.displacement_tolerance = 1e-10;
+  settings.patience = 4;
+  Vector x;
+  const NewtonResult with = solve_arctangent(1.3, settings, 0.5, x);
+  ASSERT_TRUE(with.converged) << with.failure;
+  ASSERT_GT(with.residuals.size(), 5u);
+  // The case in question: at the patience the residual is within tolerance and the residuals
+  // fall linearly (by about 0.23 an iteration), so the superlinear test alone would give up.
+  EXPECT_LE(with.residuals[4], settings.residual_tolerance);
+  EXPECT_GT(with.residuals[4], superlinear_contraction * with.residuals[3]);
+  settings.patience = 0;
+  const NewtonResult without = solve_arctangent(1.3, settings, 0.5, x);
+  ASSERT_TRUE(without.converged) << without.failure;
+  EXPECT_EQ(with.iterations, without.iterations);
+}
+
 }  // namespace
 }  // namespace geompm
