@@ -212,8 +212,8 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaAtPhi20FallsAndFlattensWithThe
   // The rough N_gamma footing with phi = psi = 20 deg (docs/validation.md §9, N_gamma at phi = 20),
   // where associated flow dilates at sin 20 = 0.34 of the shear rate instead of 0.5, with
   // backtracking (`line_search: 6`), each mesh pushed 0.006 B. Martin (2005), rough, phi = 20 deg:
-  // N_gamma = 2.84 (as commonly quoted). Measured at 0.004 B: 6.77, 5.31, 4.28 on h = B/10, B/20,
-  // B/40 (+139, +87, +51 %); from 0.004 to 0.006 B the load rises by 11.2, 6.5 and 2.0 %.
+  // N_gamma = 2.84 (as commonly quoted). Measured at 0.004 B: 6.77, 5.31, 4.30 on h = B/10, B/20,
+  // B/40 (+139, +87, +51 %); from 0.004 to 0.006 B the load rises by 11.2, 6.5 and 1.8 %.
   constexpr double kNgammaRough20 = 2.84;
   const auto text = [](int n) {
     auto t = testing::replace_once(
