@@ -68,7 +68,7 @@ class OutputWriter {
   /// Every Newton attempt, converged or cut back: one row per iteration, with where the
   /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation),
   /// with `newton.tangent_check`, the tangent's error along the correction that follows (0 when
-  /// the check is off or no correction followed), and the points on their yield surface with
+  /// the check is off or no correction followed), and the points returned plastically with
   /// how many switched between elastic and plastic since the iterate before (-1 at an attempt's
   /// first iterate).
   void newton_log(int step_number, double time, double dt, const StepResult& step) {

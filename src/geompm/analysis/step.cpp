@@ -97,9 +97,9 @@ class LagrangianProblem final : public NonlinearProblem {
     return std::sqrt(sum);
   }
 
-  /// The points on their yield surface at the last evaluation, and how many of them changed
-  /// between elastic and plastic since the last call (newton.csv): where they keep switching,
-  /// Newton's tangent describes a different branch of the return at every iterate.
+  /// The points whose update returned them plastically at the last evaluation, and how many
+  /// changed between elastic and plastic since the last call (newton.csv). A switching point
+  /// changes the branch of the return, and with it the tangent, between iterates.
   ActiveSet active_set() override {
     const std::vector<char>& plastic = grid_.plastic_points();
     ActiveSet set{0, last_plastic_.size() == plastic.size() ? 0 : -1};
@@ -323,7 +323,10 @@ void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t siz
 // A Newton solve that followed a failed one in the same step, with the failed one's iterations
 // in front: the counts include both, and the log (newton.csv) shows both in turn. The log pairs
 // residual k with corrections[k - 1] (the correction that led to it) and tangent_errors[k], so
-// those are padded to the failed attempt's residuals (a zero where the second attempt starts).
+// those are padded to the failed attempt's residuals (a zero where the second attempt starts). A
+// failed attempt that ended on an inadmissible iterate has one correction more than it logged
+// residuals after the first (the one that led there): it is dropped, so that the second attempt's
+// first row shows no correction.
 NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   const std::size_t n = failed.residuals.size();
   second.iterations += failed.iterations;
@@ -331,7 +334,9 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);
-  put_in_front(second.corrections, failed.corrections, n);
+  std::vector<double> corrections = failed.corrections;
+  corrections.resize(std::min(corrections.size(), n > 0 ? n - 1 : 0));
+  put_in_front(second.corrections, std::move(corrections), n);
   if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
     put_in_front(second.tangent_errors, failed.tangent_errors, n);
   return second;

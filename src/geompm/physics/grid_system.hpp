@@ -164,7 +164,8 @@ class GridSystem {
   Vec3 interpolate_at(const MaterialPoints& points, Index p, const Vec3& offset,
                       const Vector& nodal) const;
   /// Per point (in the cell-sorted order of initialise()): 1 if the last internal_force returned
-  /// it to its yield surface, 0 if its update was elastic (Newton's active set, newton.csv).
+  /// it plastically (its return moved the trial state), 0 if its update was elastic (Newton's
+  /// active set, newton.csv).
   const std::vector<char>& plastic_points() const { return plastic_; }
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
   bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
