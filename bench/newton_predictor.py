@@ -52,19 +52,16 @@ PLASTIC_SIDE = re.compile(r"(model: (?:mohr_coulomb|tresca),)")
 
 
 def model_text(example):
-    if example.startswith((STIFF, TRESCA_STIFF)) and os.path.join(ROOT, "scripts") not in sys.path:
-        sys.path.insert(0, os.path.join(ROOT, "scripts"))
-    if example.startswith(TRESCA_STIFF):
+    if example.startswith((STIFF, TRESCA_STIFF)):
+        if os.path.join(ROOT, "scripts") not in sys.path:
+            sys.path.insert(0, os.path.join(ROOT, "scripts"))
         import validation_report as report
+    if example.startswith(TRESCA_STIFF):
         kind, n = example[len(TRESCA_STIFF):].split(":")
         text = report.tresca_limit_text(report.STRIP_FILE[kind], int(n), extrapolate=False)
     elif example.startswith(STIFF):
-        import validation_report as report
-        n = int(example[len(STIFF):])
-        text = report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml")
-        text = report.replace_once(report.replace_once(report.strip_mesh(text, n), "E: 1000,",
-                                                       f"E: {report.MC_STIFF_E},"),
-                                   '"-0.05*t"', f'"-{report.MC_STIFF_PUSH}*t"')
+        text = report.mc_limit_text(report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml"),
+                                    int(example[len(STIFF):]))
     else:
         with open(os.path.join(ROOT, "examples", example)) as f:
             text = f.read()

@@ -1554,12 +1554,18 @@ def mesh_limit_table(w, runs, prefix, levels, Nc, S, end, last):
     return q_end
 
 
+def mc_limit_text(mc_text, n):
+    """The c-phi strip `mc_text` in the rigid-plastic limit (E = MC_STIFF_E, pushed
+    MC_STIFF_PUSH) on n cells under the half-width, from a zero start."""
+    return replace_once(replace_once(strip_mesh(mc_text, n), "E: 1000,", f"E: {MC_STIFF_E},"),
+                        '"-0.05*t"', f'"-{MC_STIFF_PUSH}*t"')
+
+
 def mohr_coulomb_rigid_plastic_limit(runner, mc_text, Nc):
     lines = []
     w = lines.append
     levels = (5, 10, 20, 40)
-    cases = {n: replace_once(replace_once(strip_mesh(mc_text, n), "E: 1000,", f"E: {MC_STIFF_E},"),
-                             '"-0.05*t"', f'"-{MC_STIFF_PUSH}*t"') for n in levels}
+    cases = {n: mc_limit_text(mc_text, n) for n in levels}
     runs = runner.batch({f"mc_stiff_{n}": extrapolated_start(t) for n, t in cases.items()})
     zero = runner.batch({f"mc_stiff_{levels[-1]}_zero": cases[levels[-1]]})
     S = -2.0
@@ -2756,7 +2762,7 @@ FOOTING_DISCUSSION_8_LIMIT = (
     "the closer model of it, and the softer one the closer model of a footing test. Asserted in "
     "`tests/verification/test_footing_validation.cpp` on h = B/10, B/20 and B/40 at this stiffness "
     "(the creep falling with h and below 1 % on h = B/40, the error falling with h from above, the "
-    "Richardson extrapolation within 3 % of N_c); the h = B/80 run (about 5 minutes) is in this "
+    "Richardson extrapolation within 3 % of N_c); the h = B/80 run (its time in the table) is in this "
     "report only. *Newton*: the table's counts are from the extrapolated start (above). A zero "
     "start with the plastic side's tangent at points on the yield surface instead of the elastic "
     "side's (`surface_tangent: plastic`, docs/materials.md §1.7), which the test uses, carries the "
