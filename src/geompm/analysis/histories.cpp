@@ -87,7 +87,7 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
         if (step.constrained[d]) value += step.reaction(d);
       };
       if (!h.footing.empty()) {
-        // The force the footing exerts on the soil (docs/theory.md eq. 13.8).
+        // The force the footing exerts on the soil (docs/theory.md eq. 13.10).
         if (auto it = step.footing_reactions.find(h.footing); it != step.footing_reactions.end())
           value = it->second(h.component);
       } else if (!h.boundary.empty()) {

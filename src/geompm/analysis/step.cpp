@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <unordered_map>
 
+#include "geompm/boundary/contact_hold.hpp"
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/solver/newmark.hpp"
 
@@ -100,6 +102,13 @@ class LagrangianProblem final : public NonlinearProblem {
   /// The points whose update returned them plastically at the last evaluation, and how many
   /// changed between elastic and plastic since the last call (newton.csv). A switching point
   /// changes the branch of the return, and with it the tangent, between iterates.
+  /// Holds the branches of switches outside the material (contact) that the accepted iterate
+  /// took, through `hold` (StepSolver::hold_footing_contacts).
+  void iterate_accepted() override {
+    if (hold) hold();
+  }
+  std::function<void()> hold;
+
   ActiveSet active_set() override {
     const std::vector<char>& plastic = grid_.plastic_points();
     ActiveSet set{0, last_plastic_.size() == plastic.size() ? 0 : -1};
@@ -208,7 +217,10 @@ struct StepSolver::FootingStep {
   std::vector<std::vector<std::pair<Index, FootingContactPoint>>> points;
   std::vector<std::vector<int>> slot;  // per footing and point: its entry in `points`, or -1
   std::vector<std::unordered_map<Index, Vec3>> touching;  // point id -> anchor, per footing
-  std::vector<Vec3> offset;  // per point: from the point to the top of its domain
+  /// Per footing and candidate: pressed against the base at the contact law's last evaluation.
+  std::vector<std::vector<char>> pressed;
+  std::vector<ContactHold> hold;  // per footing: the candidates held in contact (eqs. 13.8-9)
+  std::vector<Vec3> offset;       // per point: from the point to the top of its domain
 };
 
 void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t1,
@@ -269,6 +281,10 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
       candidates.emplace_back(p, c);
       acts[p] = 1;
     }
+    std::vector<char> held;
+    for (const auto& candidate : candidates) held.push_back(candidate.second.bilateral);
+    step.pressed.emplace_back(candidates.size(), 0);
+    step.hold.emplace_back(std::move(held));
     step.displacement.push_back(d);
     step.pose.push_back(pose);
     step.points.push_back(std::move(candidates));
@@ -284,10 +300,27 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
                                   const FootingContactForce c =
                                       footing_contact(step.pose[k], step.points[k][at].second, u,
                                                       dim, axisymmetric);
+                                  // Each point is evaluated by one thread only.
+                                  step.pressed[k][at] = c.on_base && c.penetration > 0.0;
                                   f += c.force;
                                   K += c.stiffness;
                                 }
                             });
+}
+
+void StepSolver::hold_footing_contacts(FootingStep& step, bool restart) {
+  // After an accepted Newton iterate, or before a new solve of the step: the points the contact
+  // law holds in both directions (ContactHold, docs/theory.md §13). At the iterate a newly held
+  // point touches, so the residual Newton has there does not change.
+  for (std::size_t k = 0; k < step.points.size(); ++k) {
+    ContactHold& hold = step.hold[k];
+    if (restart)
+      hold.restart();
+    else
+      hold.accept(step.pressed[k]);
+    for (std::size_t at = 0; at < hold.size(); ++at)
+      step.points[k][at].second.bilateral = hold.held(at);
+  }
 }
 
 void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result) {
@@ -424,6 +457,8 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   // --- phase 2: Lagrangian (Newton) -------------------------------------------------------
   Newmark newmark{phase.spec->dynamics.beta, phase.spec->dynamics.gamma, dt};
   LagrangianProblem problem(grid_, points, f_ext, du, dynamic, newmark);
+  if (!phase.footings.empty())
+    problem.hold = [&footings] { hold_footing_contacts(footings, false); };
   NewtonSettings settings;
   settings.max_iterations = phase.spec->newton.max_iterations;
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
@@ -446,6 +481,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   result.newton = solve_newton(problem, solver_, first, x, grid_.tangent_storage());
   if (extrapolated && !result.newton.converged) {
     x.setZero();
+    hold_footing_contacts(footings, true);
     NewtonResult from_zero = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
     result.newton = after_attempt(result.newton, std::move(from_zero));
   }

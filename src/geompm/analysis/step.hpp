@@ -65,6 +65,7 @@ class StepSolver {
                                std::vector<Vec3>& prescribed);
   struct FootingStep;
   void prepare_footings(const PhaseContext& phase, double t0, double t1, FootingStep& step);
+  static void hold_footing_contacts(FootingStep& step, bool restart);
   void footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result);
 
   Model& model_;

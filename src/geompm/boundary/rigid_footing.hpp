@@ -33,9 +33,10 @@ struct FootingContactPoint {
   Vec3 half = Vec3::Zero();
   double kappa = 0.0;
   bool rough = false;
-  /// Touching at the start of the step: held in both directions through the step's Newton
-  /// iterations (eq. 13.8), so that its contact does not flip on and off from one iteration to
-  /// the next; released at the end of a step that leaves it in tension.
+  /// Held in contact in both directions (ContactHold): touching at the start of the step (eq.
+  /// 13.8), or come into contact a second time in the step's Newton iterates (eq. 13.9), so that
+  /// its contact does not flip on and off from one iteration to the next; released at the end of
+  /// a step that leaves it in tension.
   bool bilateral = false;
   Vec3 anchor = Vec3::Zero();
 };

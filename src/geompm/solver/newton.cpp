@@ -63,6 +63,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     result.largest.push_back(problem.largest_residual_unknown());
     result.active.push_back(problem.active_set());
     if (k == 0) result.active.back().changed = -1;  // against another solve's iterate
+    problem.iterate_accepted();
     if (!std::isfinite(relative)) {
       result.failure = "the residual is not finite";
       return result;
