@@ -271,12 +271,14 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
       c.rough = footing.rough();
       // A point pressed against the base at the end of the last step stays in contact in both
       // directions through this step's iterations (eq. 13.8). A rough one sticks where it was
-      // first touched: its horizontal position relative to the footing at the start of the step
-      // of its first contact.
+      // first touched: where its path met the base in the step of its first contact (eq. 13.4a),
+      // from its position and gap at the start of that step.
       const auto anchor = footing.anchor(points.id[p]);
       c.bilateral = anchor.has_value();
+      c.anchored = anchor.has_value();
       c.anchor = anchor ? *anchor : Vec3(top - footing.done());
       c.anchor(v) = 0.0;
+      c.start_gap = top(v) - footing.pose(footing.done()).base;
       slot[p] = static_cast<int>(candidates.size());
       candidates.emplace_back(p, c);
       acts[p] = 1;
@@ -337,7 +339,7 @@ void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepR
       const Vec3 u = grid_.interpolate_at(points, p, step.offset[p], result.displacement);
       const FootingContactForce c = footing_contact(step.pose[k], point, u, dim, axisymmetric);
       force -= c.force;
-      if (c.on_base && c.penetration > 0.0) touching[k][points.id[p]] = point.anchor;
+      if (c.on_base && c.penetration > 0.0) touching[k][points.id[p]] = c.stuck_at;
     }
     result.footing_reactions.try_emplace(phase.footings[k].name(), Vec3::Zero()).first->second +=
         force;

@@ -96,11 +96,27 @@ FootingContactForce footing_contact(const FootingPose& pose, const FootingContac
   c.stiffness(v, v) = k * area;
   for (int t = 0; t < v; ++t) c.stiffness(v, t) = k * g * d_area(t);
   if (point.rough) {
-    // Stick: the horizontal position relative to the footing held at the anchor (eq. 13.4).
+    // Stick: the horizontal position relative to the footing held at the anchor (eq. 13.4). A
+    // point that was below the base at the start of the step (g_0 < 0) first touches it where
+    // its path through the step, straight from g_0 to g, meets the base: at the fraction
+    // -g_0 / (g - g_0) of its motion relative to the footing. Only the rest of that motion
+    // slips against the anchor, a share phi = g / (g - g_0) (eq. 13.4a), so the stick force
+    // grows from zero as the point touches, instead of switching on with its whole motion of the
+    // step, a jump in the residual that Newton cannot cross.
+    double phi = 1.0, dphi_dg = 0.0;
+    if (!point.anchored && point.start_gap < 0.0) {
+      const double span = g - point.start_gap;
+      phi = g > 0.0 ? g / span : 0.0;
+      dphi_dg = g > 0.0 ? -point.start_gap / (span * span) : 0.0;
+    }
+    c.stuck_at = point.anchor;
     for (int t = 0; t < v; ++t) {
-      const double slip = x(t) - pose.displacement(t) - point.anchor(t);
+      const double motion = x(t) - pose.displacement(t) - point.anchor(t);
+      const double slip = phi * motion;
+      c.stuck_at(t) += motion - slip;
       c.force(t) = k * area * slip;
-      c.stiffness(t, t) += k * area;
+      c.stiffness(t, t) += k * area * phi;
+      c.stiffness(t, v) += k * area * motion * dphi_dg;
       for (int s = 0; s < v; ++s) c.stiffness(t, s) += k * slip * d_area(s);
     }
   }

@@ -38,6 +38,12 @@ struct FootingContactPoint {
   /// its contact does not flip on and off from one iteration to the next; released at the end of
   /// a step that leaves it in tension.
   bool bilateral = false;
+  /// Rough: where the point sticks. `anchored`: it stuck at the end of the last step (the anchor
+  /// kept, eq. 13.4); otherwise the anchor is its position at the start of the step and
+  /// `start_gap` the gap g it had to the footing's base then (< 0: below it), from which the
+  /// place it first touches along the step is found (eq. 13.4a).
+  bool anchored = false;
+  double start_gap = 0.0;
   Vec3 anchor = Vec3::Zero();
 };
 
@@ -49,6 +55,8 @@ struct FootingContactForce {
   double area = 0.0;              // A: the point's domain under the footprint (per radian)
   bool touching = false;
   bool on_base = false;  // false when touching through the side (eq. 13.5)
+  /// Rough, on the base: the anchor the point sticks to from now on (eq. 13.4a).
+  Vec3 stuck_at = Vec3::Zero();
 };
 
 /// The contact law: zero unless the point's domain reaches through the base (g > 0) and overlaps

@@ -108,6 +108,9 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
       contact[p].kappa = 10 * model->largest_modulus() / offset[p](v);
       contact[p].rough = footing == FootingChoice::Rough;
       contact[p].anchor = pts.position[p] + Vec3(2e-3, -1e-3, 1.5e-3) * (p % 3 - 1.0);
+      // Every other point first touches within the step, from below the base (eq. 13.4a).
+      contact[p].anchored = p % 2 == 0;
+      if (!contact[p].anchored) contact[p].start_gap = -0.4 * offset[p](v);
       low = low.cwiseMin(pts.position[p] - contact[p].half);
       high = high.cwiseMax(pts.position[p] + contact[p].half);
       if (contact[p].position(v) > top) {

@@ -21,12 +21,18 @@ FootingPose strip_pose(double low, double high, double base) {
   return pose;
 }
 
+// A soil point as the contact sees it: the centre of its domain's top, its half-lengths, kappa.
+FootingContactPoint contact_point(const Vec3& position, const Vec3& half, double kappa) {
+  FootingContactPoint point;
+  point.position = position;
+  point.half = half;
+  point.kappa = kappa;
+  return point;
+}
+
 TEST(RigidFootingContact, NormalForceIsKappaTimesPenetrationTimesArea) {
   const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
-  FootingContactPoint point;
-  point.position = Vec3(0.2, 0.95, 0.0);
-  point.half = Vec3(0.05, 0.1, 0.0);
-  point.kappa = 1e5;
+  FootingContactPoint point = contact_point(Vec3(0.2, 0.95, 0.0), Vec3(0.05, 0.1, 0.0), 1e5);
   const Vec3 u(0.01, -0.001, 0.0);  // the domain's top at 0.95 + 0.1 - 0.001: g = 0.049
   auto c = footing_contact(pose, point, u, 2, false);
   ASSERT_TRUE(c.touching);
@@ -48,14 +54,54 @@ TEST(RigidFootingContact, NormalForceIsKappaTimesPenetrationTimesArea) {
   EXPECT_NEAR(c.force.x(), 1e5 * 0.1 * (0.21 - 0.004 - 0.2), 1e-9);
 }
 
+TEST(RigidFootingContact, ARoughPointSticksWhereItsPathMeetsTheBase) {
+  // Eq. 13.4a: a point 0.004 below the base at the start of the step (g_0 = -0.004) that has
+  // moved 0.01 sideways and 0.006 up relative to the footing (g = 0.002) touched the base a third
+  // of the way from its end: it slips by phi = g / (g - g_0) = 1/3 of its motion.
+  const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
+  FootingContactPoint point = contact_point(Vec3(0.2, 0.996, 0.0), Vec3(0.05, 0.0, 0.0), 1e5);
+  point.rough = true;
+  point.start_gap = -0.004;
+  point.anchor = Vec3(0.2, 0.0, 0.0);  // its position relative to the footing at the start
+  const Vec3 u(0.01, 0.006, 0.0);
+  const auto c = footing_contact(pose, point, u, 2, false);
+  ASSERT_TRUE(c.on_base);
+  EXPECT_NEAR(c.penetration, 0.002, 1e-15);
+  EXPECT_NEAR(c.force.x(), 1e5 * 0.1 * 0.01 / 3.0, 1e-9);
+  // Continuous where it touches: the stick force grows from zero with g (without eq. 13.4a it
+  // would switch on at kappa A 0.01 = 100).
+  const auto touching = footing_contact(pose, point, Vec3(0.01, 0.004 + 1e-12, 0.0), 2, false);
+  EXPECT_LT(std::abs(touching.force.x()), 1e-6);
+  // It sticks from then on where it touched: with that anchor kept (the next step's law), the
+  // same motion gives the same force.
+  FootingContactPoint kept = point;
+  kept.anchored = true;
+  kept.anchor = c.stuck_at;
+  EXPECT_NEAR(c.stuck_at.x(), 0.2 + 0.01 * 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(footing_contact(pose, kept, u, 2, false).force.x(), c.force.x(), 1e-9);
+  // An anchored point slips by its whole motion, as before (eq. 13.4).
+  EXPECT_NEAR(footing_contact(pose, kept, Vec3(0.02, 0.006, 0.0), 2, false).force.x(),
+              1e5 * 0.1 * (0.22 - c.stuck_at.x()), 1e-9);
+  // The tangent of eq. 13.4a (d phi / d g enters d F_x / d u_y) against central differences.
+  const double e = 1e-8;
+  for (int j = 0; j < 2; ++j) {
+    Vec3 plus = u, minus = u;
+    plus(j) += e;
+    minus(j) -= e;
+    const Vec3 column = (footing_contact(pose, point, plus, 2, false).force -
+                         footing_contact(pose, point, minus, 2, false).force) /
+                        (2 * e);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(c.stiffness(i, j), column(i), 1e-5 * std::abs(c.stiffness(i, i)))
+          << i << ", " << j;
+  }
+}
+
 TEST(RigidFootingContact, SoilHeavedBesideTheFootingIsPushedOutThroughItsSide) {
   // A domain 0.01 above the base that reaches 0.002 over the edge x = 0.5: it is pushed out
   // sideways by kappa s g (eq. 13.5), not down by kappa g o.
   const FootingPose pose = strip_pose(0.0, 0.5, 1.0);
-  FootingContactPoint point;
-  point.position = Vec3(0.523, 1.01, 0.0);
-  point.half = Vec3(0.025, 0.0, 0.0);
-  point.kappa = 1e5;
+  FootingContactPoint point = contact_point(Vec3(0.523, 1.01, 0.0), Vec3(0.025, 0.0, 0.0), 1e5);
   const auto c = footing_contact(pose, point, Vec3::Zero(), 2, false);
   ASSERT_TRUE(c.touching);
   EXPECT_FALSE(c.on_base);
@@ -75,10 +121,8 @@ TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
     const FootingPose pose = strip_pose(0.0, edge, 1.0);
     double width = 0.0, force = 0.0;
     for (int k = 0; k < 20; ++k) {
-      FootingContactPoint point;
-      point.position = Vec3(0.025 + 0.05 * k, 0.975, 0.0);
-      point.half = Vec3(0.025, 0.025, 0.0);
-      point.kappa = 2.0;
+      FootingContactPoint point =
+          contact_point(Vec3(0.025 + 0.05 * k, 0.975, 0.0), Vec3(0.025, 0.025, 0.0), 2.0);
       const auto c = footing_contact(pose, point, Vec3(0, 0.001, 0), 2, false);
       width += c.area;
       force += c.force.y();
@@ -91,10 +135,8 @@ TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
     const FootingPose pose = strip_pose(0.0, radius, 1.0);
     double area = 0.0;
     for (int k = 0; k < 20; ++k) {
-      FootingContactPoint point;
-      point.position = Vec3(0.025 + 0.05 * k, 0.975, 0.0);
-      point.half = Vec3(0.025, 0.025, 0.0);
-      point.kappa = 1.0;
+      FootingContactPoint point =
+          contact_point(Vec3(0.025 + 0.05 * k, 0.975, 0.0), Vec3(0.025, 0.025, 0.0), 1.0);
       area += footing_contact(pose, point, Vec3(0, 0.001, 0), 2, true).area;
     }
     EXPECT_NEAR(area, 0.5 * radius * radius, 1e-12);
@@ -107,10 +149,8 @@ TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
   double area = 0.0;
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) {
-      FootingContactPoint point;
-      point.position = Vec3(0.05 + 0.1 * i, 0.05 + 0.1 * j, 0.95);
-      point.half = Vec3(0.05, 0.05, 0.05);
-      point.kappa = 1.0;
+      FootingContactPoint point =
+          contact_point(Vec3(0.05 + 0.1 * i, 0.05 + 0.1 * j, 0.95), Vec3(0.05, 0.05, 0.05), 1.0);
       area += footing_contact(plate, point, Vec3(0, 0, 0.001), 3, false).area;
     }
   EXPECT_NEAR(area, (0.61 - 0.13) * 0.377, 1e-12);
