@@ -99,9 +99,6 @@ class LagrangianProblem final : public NonlinearProblem {
     return std::sqrt(sum);
   }
 
-  /// The points whose update returned them plastically at the last evaluation, and how many
-  /// changed between elastic and plastic since the last call (newton.csv). A switching point
-  /// changes the branch of the return, and with it the tangent, between iterates.
   /// Holds the branches of switches outside the material (contact) that the accepted iterate
   /// took, through `hold` (StepSolver::hold_footing_contacts).
   void iterate_accepted() override {
@@ -109,6 +106,9 @@ class LagrangianProblem final : public NonlinearProblem {
   }
   std::function<void()> hold;
 
+  /// The points whose update returned them plastically at the last evaluation, and how many
+  /// changed between elastic and plastic since the last call (newton.csv). A switching point
+  /// changes the branch of the return, and with it the tangent, between iterates.
   ActiveSet active_set() override {
     const std::vector<char>& plastic = grid_.plastic_points();
     ActiveSet set{0, last_plastic_.size() == plastic.size() ? 0 : -1};
