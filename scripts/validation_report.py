@@ -1239,9 +1239,10 @@ def section_footing(args, work):
       "gap. Eq. 13.9 holds such a point for the rest of the step. The cap of 10 iterations is not "
       "met on this mesh (table), and with it both rigid runs stop where they did before the hold "
       "(mesh table above: rough at 0.042 D, where points switch between elastic and plastic, not "
-      "their contact (§4 (iv)); smooth at 0.063 D). The smooth footing stops with 20 iterations "
-      "too, its largest residual in the pressure equation at the surface node beside the edge; "
-      "what stalls it there is not found.")
+      "their contact (§4 (iv)); smooth at 0.063 D)."
+      + ("" if circ_20["smooth_n20_it20"].ok else
+         " The smooth footing stops with 20 iterations too (table: where, and the largest "
+         "residual); what stalls it there is not found."))
     rough_20 = circ_20["rigid_n20_it20"]
     if rough_20.ok:
         w("")
