@@ -163,9 +163,9 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section =
-      node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
-                "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure"});
+  const yaml::Map section = node.map(
+      {"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers", "lost_points",
+       "linear_solver", "mixed_volume", "mixed_material_pressure", "mixed_pressure_equation"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -191,6 +191,16 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.mixed_volume_average = volume->choice({"cell_average", "per_point"}) == "cell_average";
   if (auto pressure = section.find("mixed_material_pressure"))
     numerics.mixed_field_pressure = pressure->choice({"own", "field"}) == "field";
+  if (auto equation = section.find("mixed_pressure_equation")) {
+    numerics.mixed_incremental_pressure =
+        equation->choice({"total", "incremental"}) == "incremental";
+    // The field's pressure (theory §14) carries its own mismatch over the steps (eq. 14.2).
+    if (numerics.mixed_incremental_pressure && numerics.mixed_field_pressure)
+      equation->fail(
+          "expected 'total' with mixed_material_pressure: field (the field's pressure carries its "
+          "volume mismatch over the steps, docs/theory.md §14); 'incremental' applies to "
+          "mixed_material_pressure: own");
+  }
   if (auto solver = section.find("linear_solver"))
     numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
   return numerics;

@@ -667,7 +667,11 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
       if constexpr (Mixed) {
         Eigen::Matrix<double, nen, nen> S;
         pressure_stabilisation<E>(points, ci, S);
-        f_cell.template tail<nen>().noalias() += s_p * (S * p_local);
+        // Eq. 11.5 on the pressure, or eq. 11.9 on its change over the step (s_p x, eq. 11.6).
+        if (settings_.mixed_incremental_pressure)
+          f_cell.template tail<nen>().noalias() += (s_p * s_p) * (S * x_flat.template tail<nen>());
+        else
+          f_cell.template tail<nen>().noalias() += s_p * (S * p_local);
         K_cell.template bottomRightCorner<nen, nen>() += (s_p * s_p) * S;
       }
 
@@ -696,9 +700,9 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         bool ok = false;
         if constexpr (Mixed) {
           if (is_mixed(points, p)) {
-            ok =
-                integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
-                                      rm, cell_average, settings_.mixed_field_pressure);
+            ok = integrate_mixed_point(
+                s, start, du_local, p_local, axisymmetric, tangent != nullptr, rm, cell_average,
+                settings_.mixed_field_pressure, settings_.mixed_incremental_pressure);
             if (ok) {
               f_cell.template head<n>() += rm.u.internal_force;
               f_cell.template tail<nen>() += s_p * rm.pressure_residual;
@@ -950,7 +954,8 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
           p_local(a) = pressure_start_(nodes[a]) + pressure_scale_ * du(pressure_dof(nodes[a]));
         if (!integrate_mixed_point(s, start, du_local, p_local, axisymmetric, tangent != nullptr,
                                    rm, averaged ? &average : nullptr,
-                                   settings_.mixed_field_pressure)) {
+                                   settings_.mixed_field_pressure,
+                                   settings_.mixed_incremental_pressure)) {
           note_inadmissible(p);
           return false;
         }

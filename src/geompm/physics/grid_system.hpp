@@ -56,6 +56,9 @@ struct GridSettings {
   /// Mixed points evaluate their material at the volume whose pressure is the field's
   /// (docs/theory.md §14) rather than at their kinematic volume.
   bool mixed_field_pressure = false;
+  /// Mixed points tie the step's change of their material pressure to the field's (eq. 11.8), and
+  /// the stabilisation acts on the step's pressure change (eq. 11.9), rather than the totals.
+  bool mixed_incremental_pressure = false;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in

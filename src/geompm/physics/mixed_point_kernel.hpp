@@ -5,6 +5,9 @@
 //
 //   equilibrium   f_u = v B^T sigma~,   sigma~ = dev sigma - p^ I              (eq. 11.1)
 //   pressure      g   = v N (p^ - p_mat) / K,   p_mat = -tr(sigma) / 3          (eq. 11.2)
+//   or its change over the step
+//                 g   = v N ((p^ - p_mat) / K - m_n),                          (eq. 11.8)
+//   m_n = (p^ - p_mat) / K of the point at the end of the last step
 //
 // with sigma, p_mat from the material at the point's full deformation, K the point's elastic bulk
 // modulus and v its current volume. The cell-wise pressure stabilisation (eq. 11.5) is added by
@@ -38,7 +41,9 @@ struct MixedKernelResult {
   Eigen::Matrix<double, NS, n> K_pu;               // d g / d u
   Eigen::Matrix<double, NS, NS> K_pp;              // d g / d p
   Mat3 total_stress;                               // sigma~
-  double volume_mismatch = 0.0;  // at the field's pressure: ln J_k - ln R at the end of the step
+  // At the field's pressure: ln J_k - ln R at the end of the step (eq. 14.2); with the
+  // incremental pressure equation, (p^ - p_mat) / K (eq. 11.8); otherwise 0.
+  double volume_mismatch = 0.0;
 };
 
 /// The mixed spatial tangent (eqs. 11.3-11.4). a = a_mat - sigma_il delta_jk (eq. 3.9); its
@@ -78,15 +83,17 @@ bool integrate_field_pressure_point(const Stencil<NS, Dim>& s, const PointStartS
 
 /// p_nodes: the stencil's nodal pressures; average: the volume change averaged over the point's
 /// cell (F-bar, theory §12), or null for the point's own. field_pressure: the material is
-/// evaluated at the volume whose pressure is p^ (theory §14), not at the kinematic one. Other
-/// arguments as integrate_point.
+/// evaluated at the volume whose pressure is p^ (theory §14), not at the kinematic one.
+/// incremental_pressure: the pressure equation ties the step's change of p^ - p_mat, not its
+/// total (eq. 11.8), so that a mismatch a point carries from earlier steps (and into another
+/// cell) does not force the field. Other arguments as integrate_point.
 template <int NS, int Dim>
 bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
                            const Eigen::Matrix<double, NS, Dim>& du,
                            const Eigen::Matrix<double, NS, 1>& p_nodes, bool axisymmetric,
                            bool want_tangent, MixedKernelResult<NS, Dim>& out,
                            const AveragedVolumeChange<NS, Dim>* average = nullptr,
-                           bool field_pressure = false) {
+                           bool field_pressure = false, bool incremental_pressure = false) {
   using GC = GradientComponents<Dim>;
   constexpr int nc = GC::count;
   constexpr int n_dofs = KernelResult<NS, Dim>::n;
@@ -107,7 +114,12 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   Eigen::Matrix<double, nc, 1> sigma_total;
   for (int c = 0; c < nc; ++c) sigma_total(c) = out.total_stress(GC::row[c], GC::col[c]);
   out.u.internal_force.noalias() = v * (B.transpose() * sigma_total);
-  out.pressure_residual = (v * (p_hat - p_mat) / bulk) * s.N;  // eq. 11.2
+  const double carried = incremental_pressure ? p.volume_mismatch : 0.0;
+  out.volume_mismatch = incremental_pressure ? (p_hat - p_mat) / bulk : 0.0;
+  if (incremental_pressure)
+    out.pressure_residual = (v * (out.volume_mismatch - carried)) * s.N;  // eq. 11.8
+  else
+    out.pressure_residual = (v * (p_hat - p_mat) / bulk) * s.N;  // eq. 11.2
   if (!want_tangent) return true;
 
   const ComponentMatrix<Dim> a_bar = material_part_of_tangent<Dim>(out.u.state);
@@ -119,8 +131,9 @@ bool integrate_mixed_point(const Stencil<NS, Dim>& s, const PointStartState& p,
 
   const Eigen::Matrix<double, 1, n_dofs> div = divergence_operator<NS, Dim>(B);
   out.K_up.noalias() = -v * div.transpose() * s.N.transpose();
-  // d(v p^ - v p_mat) = v p^ div du + v/3 a_bar_mmkl grad(du)_kl  (p^ held).
-  Eigen::Matrix<double, 1, n_dofs> dg = p_hat * div + (trace_rows * B) / 3.0;
+  // d(v p^ - v p_mat) = v p^ div du + v/3 a_bar_mmkl grad(du)_kl  (p^ held); eq. 11.8 adds
+  // d(-v K m_n) = -K m_n v div du.
+  Eigen::Matrix<double, 1, n_dofs> dg = (p_hat - bulk * carried) * div + (trace_rows * B) / 3.0;
 
   if (average) {
     // F-bar (theory eqs. 12.5-12.6): d(v sigma) += v q (D^ - D_in) du with q the

@@ -25,7 +25,8 @@ struct MaterialChoice {
   std::map<std::string, double> parameters;
   bool mixed = false;
   bool volume_average = false;
-  bool field_pressure = false;  // the material at the field's pressure (theory §14)
+  bool field_pressure = false;        // the material at the field's pressure (theory §14)
+  bool incremental_pressure = false;  // the step's change of the pressure equation (eq. 11.8)
 };
 
 /// Moves every point by up to `fraction` of its domain half-size along each axis (in the
@@ -71,6 +72,7 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
     settings.mixed.assign(spec.materials.size(), choice->mixed);
     settings.volume_average.assign(spec.materials.size(), choice->volume_average);
     settings.mixed_field_pressure = choice->field_pressure;
+    settings.mixed_incremental_pressure = choice->incremental_pressure;
   }
   GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
@@ -175,6 +177,11 @@ const MaterialChoice field_pressure_mohr_coulomb{"mohr_coulomb", mohr_coulomb_pa
 const MaterialChoice field_pressure_own_mohr_coulomb{"mohr_coulomb", mohr_coulomb_parameters, true,
                                                      false, true};
 const MaterialChoice field_pressure_tresca{"tresca", tresca_parameters, true, false, true};
+// The pressure equation's change over the step (eqs. 11.8-11.9): the carried mismatch enters K_pu
+// through the point's volume change.
+const MaterialChoice incremental_tresca{"tresca", tresca_parameters, true, false, false, true};
+const MaterialChoice incremental_mohr_coulomb{
+    "mohr_coulomb", mohr_coulomb_parameters, true, true, false, true};
 // The displacement formulation with the cell's volume change (formulation: f_bar): the tangent
 // gains eq. 12.5 with the whole stress rate q, not only its deviator.
 const MaterialChoice f_bar_tresca{"tresca", tresca_parameters, false, true};
@@ -200,6 +207,23 @@ TEST(GridSystemTangent, MixedMohrCoulombGimp) {
 TEST(GridSystemTangent, MixedMohrCoulomb3D) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
                           &mixed_mohr_coulomb);
+}
+
+TEST(GridSystemTangent, IncrementalPressureTrescaPlaneStrain) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard,
+                          &incremental_tresca);
+}
+TEST(GridSystemTangent, IncrementalPressureTrescaAxisymmetric) {
+  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
+                          &incremental_tresca);
+}
+TEST(GridSystemTangent, IncrementalPressureMohrCoulombGimp) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp,
+                          &incremental_mohr_coulomb);
+}
+TEST(GridSystemTangent, IncrementalPressureMohrCoulomb3D) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
+                          &incremental_mohr_coulomb);
 }
 
 TEST(GridSystemTangent, FieldPressureMohrCoulombPlaneStrain) {
@@ -384,6 +408,58 @@ TEST(GridSystemVolumeAverage, WithoutItEachPointKeepsItsOwn) {
 TEST(GridSystemVolumeAverage, DisplacementPointsShareItToo) {
   check_volume_average("oedometer/oedometer.yaml", true, false);
   check_volume_average("column/column_3d.yaml", true, false);
+}
+
+// The incremental pressure equation (theory eqs. 11.8-11.9): a step starts in balance with what
+// the last one committed, however far the points' own volumes have drifted from the field's
+// pressure. The points carry a uniform pressure p0 (their total stress) while their elastic
+// volumes differ by up to 1 %, so their material pressures scatter by about K / 100 around it:
+// the total equation (11.2) sees that scatter as a residual of the pressure rows at zero
+// increment, which Newton would turn into a pressure field varying within the cells (the
+// checkerboard of docs/validation.md §6); the incremental one sees none once each point carries
+// the mismatch it committed.
+TEST(GridSystemIncrementalPressure, AStepStartsInBalanceWithTheMismatchThePointsCarry) {
+  auto spec = testing::read_example("oedometer/oedometer.yaml");
+  for (auto& material : spec.materials) {
+    material.model = mixed_tresca.model;
+    material.parameters = mixed_tresca.parameters;
+  }
+  auto model = build_model(spec);
+  const double p0 = 3.0;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (Index p = 0; p < model->points.size(); ++p) {
+    model->points.stress[p] = -p0 * Mat3::Identity();
+    const double stretch = 1.0 + 0.005 * u(rng);  // plane strain: J_e = stretch^2
+    model->points.elastic_left_cauchy_green[p] =
+        Vec3(stretch * stretch, stretch * stretch, 1.0).asDiagonal();
+  }
+  auto pressure_rows = [&](const MaterialPoints& points, bool incremental) {
+    GridSettings settings;
+    settings.kinematics = spec.kinematics;
+    settings.mixed.assign(spec.materials.size(), 1);
+    settings.volume_average.assign(spec.materials.size(), 0);
+    settings.mixed_incremental_pressure = incremental;
+    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    MaterialPoints copy = points;
+    grid.initialise(copy);
+    grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+    const Vector zero = Vector::Zero(grid.num_dofs());
+    Vector f;
+    EXPECT_TRUE(grid.internal_force(copy, zero, f, nullptr));
+    const Index first = grid.pressure_dof(0);
+    const Vector rows = f.tail(f.size() - first);
+    EXPECT_TRUE(grid.commit_state(copy, zero));
+    return std::pair{rows.lpNorm<Eigen::Infinity>(), copy};
+  };
+  // The total equation: the scattered material pressures force the pressure rows.
+  const auto [total, unused] = pressure_rows(model->points, false);
+  // The incremental one, after a step at rest has committed each point's mismatch.
+  const auto [first_step, committed] = pressure_rows(model->points, true);
+  const auto [next_step, unused_again] = pressure_rows(committed, true);
+  EXPECT_GT(total, 1e-6);
+  EXPECT_NEAR(first_step, total, 1e-9 * total);  // nothing carried yet: the same residual
+  EXPECT_LT(next_step, 1e-10 * total);
 }
 
 // DDMP gradients and GIMP weights reproduce a linear displacement field exactly: a uniform

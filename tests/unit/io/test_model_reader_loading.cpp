@@ -66,6 +66,7 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_FALSE(model.numerics.mixed_volume_average);
   EXPECT_TRUE(model.numerics.mixed_field_pressure);
+  EXPECT_FALSE(model.numerics.mixed_incremental_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
   EXPECT_TRUE(model.phases.at(1).newton.extrapolate);
@@ -73,6 +74,9 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
   EXPECT_TRUE(defaults.numerics.mixed_volume_average);
   EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
+  const spec::Model incremental = read_model_from_string(
+      kLoadingModel + "numerics: {mixed_pressure_equation: incremental}\n", "model.yaml");
+  EXPECT_TRUE(incremental.numerics.mixed_incremental_pressure);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -349,6 +353,20 @@ const std::vector<LoadingCase> kLoadingCases = {
      "mixed_material_pressure: projected",
      "numerics.mixed_material_pressure",
      "field"},
+    {"mixed_pressure_equation_unknown",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {mixed_pressure_equation: rate}\n"}},
+     "mixed_pressure_equation: rate",
+     "numerics.mixed_pressure_equation",
+     "expected one of: total, incremental"},
+    {"mixed_pressure_equation_with_field_pressure",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {mixed_material_pressure: field, mixed_pressure_equation: incremental}\n"}},
+     "mixed_pressure_equation: incremental",
+     "numerics.mixed_pressure_equation",
+     "applies to mixed_material_pressure: own"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
