@@ -1244,7 +1244,9 @@ def section_footing(args, work):
       "the footing's corner turns inside out, "
       + ("now finishes (how the change spares that point is not traced). " if incr["standard"].ok
          else "still stops. ")
-      + "The curves beyond 0.5 B still differ by interpolation, as with the total equation.")
+      + "The curves beyond 0.5 B still differ by interpolation, as with the total equation. "
+      "Standard MPM with it is asserted in `tests/verification/test_footing_validation.cpp` to "
+      "finish at 1 B with a resistance near 2 + π at 0.1 B that rises with embedment.")
     w("")
 
     # --- §7 circular footing -----------------------------------------------------------------
@@ -1417,7 +1419,8 @@ def section_footing(args, work):
       "a step): " + ", ".join(
           f"{LABEL[k]} " + (f"{incr_fine[k][0] * 100:+.1f} %: {verdict(0 <= incr_fine[k][0] <= 0.05)}"
                             if k in incr_fine else "stops before 0.1 D: not reached")
-          for k in KINDS) + ".")
+          for k in KINDS) + " (the rough rigid footing's value asserted in "
+      "`tests/verification/test_footing_validation.cpp`).")
     w("")
     # the points' quadrature (§5): the same footings at h = D/20 with 3×3 points per cell
     circ_dense = runner.batch({f"circ_{k}_p9": dense_points(circ_text[k]) for k in KINDS})
