@@ -556,6 +556,12 @@ def stopped(r, scale):
     return f"stopped at {x[-1]:.3f} B (q/s_u = {q[-1]:.2f}): {stop_reason(r, detail=True)}"
 
 
+def at_tenth(r, scale):
+    """q at a settlement of 0.1 (B or D), its mean over 0.08-0.1, and Newton's most and mean
+    iterations a step."""
+    return (r.q_at(scale, 0.1), r.q_mean(scale, 0.08, 0.1), *r.iterations())
+
+
 def verdict(ok):
     return "reached" if ok else "not reached"
 
@@ -1318,8 +1324,7 @@ def section_footing(args, work):
                 w(f"| {LABEL[name]} | D/{2 * n} | {stopped(r, C).replace(' B', ' D')} ({tq}) | "
                   f"({tm}) | | | | {r.wall:.0f} s |")
                 continue
-            q, qm = r.q_at(C, 0.1), r.q_mean(C, 0.08, 0.1)
-            itmax, itmean = r.iterations()
+            q, qm, itmax, itmean = at_tenth(r, C)
             incr_errors[(name, n)] = (q / ref - 1, itmax)
             w(f"| {LABEL[name]} | D/{2 * n} | {q:.3f} ({tq}) | {qm:.3f} ({tm}) | "
               f"{(q / ref - 1) * 100:+.1f} % | {r.steps} | {itmax} / {itmean:.1f} | {r.wall:.0f} s |")
@@ -1369,8 +1374,7 @@ def section_footing(args, work):
             w(f"| {LABEL[name]} | 0.1 D | {stopped(r, C).replace(' B', ' D')} | | | | | | | "
               f"{r.wall:.0f} s |")
             continue
-        q, qm = r.q_at(C, 0.1), r.q_mean(C, 0.08, 0.1)
-        itmax, itmean = r.iterations()
+        q, qm, itmax, itmean = at_tenth(r, C)
         over = int(np.sum(r.h["newton_iterations"][1:] > 10))
         w(f"| {LABEL[name]} | 0.1 D | {q:.3f} | {qm:.3f} | {(q / ref - 1) * 100:+.1f} % | "
           f"{r.steps} | {itmax} / {itmean:.1f} | {over} | {r.cutbacks} | {r.wall:.0f} s |")
