@@ -60,8 +60,8 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
     }
   auto model = build_model(spec);
   if (interpolation == GridInterpolation::Gimp) scatter_points(*model, 0.6);
-  // A volume mismatch carried from earlier steps (eq. 14.2), different at every point, so that
-  // the field-pressure cases check its share of the residual and of K_pu.
+  // A volume mismatch carried from earlier steps (eqs. 14.2 and 11.8), different at every point,
+  // so that the field-pressure and incremental cases check its share of the residual and of K_pu.
   for (Index p = 0; p < model->points.size(); ++p)
     model->points.volume_mismatch[p] = 0.01 * std::sin(1.0 + p);
   GridSettings settings;
@@ -416,7 +416,7 @@ TEST(GridSystemVolumeAverage, DisplacementPointsShareItToo) {
 // volumes differ by up to 1 %, so their material pressures scatter by about K / 100 around it:
 // the total equation (11.2) sees that scatter as a residual of the pressure rows at zero
 // increment, which Newton would turn into a pressure field varying within the cells (the
-// checkerboard of docs/validation.md §6); the incremental one sees none once each point carries
+// checkerboard of docs/validation.md §4); the incremental one sees none once each point carries
 // the mismatch it committed.
 TEST(GridSystemIncrementalPressure, AStepStartsInBalanceWithTheMismatchThePointsCarry) {
   auto spec = testing::read_example("oedometer/oedometer.yaml");
