@@ -922,10 +922,11 @@ def section_footing(args, work):
             dense_rows.append((f"rough, mixed, ν = 0.4999, {grid} points per cell",
                                checkerboard(nodal_pressure_grid(r)), checkerboard(cell_pressure_grid(r))))
     # the rigid-plastic limit (§5): stiff clay pushed 0.005 B, before any point crosses a cell
-    limit_p = runner.batch({f"{k}_limit_04999": tresca_limit_text(STRIP_FILE[k], 10, vtk=True,
-                                                                  nu=0.4999) for k in KINDS})
+    limit_p = runner.batch({f"{k}_limit_04999": tresca_limit_text(
+        STRIP_FILE[k], 10, vtk=True, nu=0.4999, start="extrapolated") for k in KINDS})
     limit_p.update(runner.batch({f"{k}_avg_limit_04999": replace_once(
-        tresca_limit_text(STRIP_FILE[k], 10, vtk=True, nu=0.4999), "mixed_volume: per_point",
+        tresca_limit_text(STRIP_FILE[k], 10, vtk=True, nu=0.4999, start="extrapolated"),
+        "mixed_volume: per_point",
         "mixed_volume: cell_average") for k in ("smooth", "rigid")}))
     limit_rows = []
     for k in list(KINDS) + ["smooth_avg", "rigid_avg"]:
@@ -1006,7 +1007,7 @@ def section_footing(args, work):
         by = {label.split(", mixed")[0]: (n, c) for label, n, c in limit_rows}
         w(f"*Before any crossing* (the rigid-plastic limit of §5: E = {TRESCA_STIFF_E:g} s_u, "
           f"pushed {TRESCA_STIFF_PUSH:g} B, ν = 0.4999, h = B/20, Newton starting each step from "
-          "the last one's increment extrapolated as in §5; rows rigid-plastic limit in the "
+          "the last one's increment extrapolated, docs/theory.md §4.5; rows rigid-plastic limit in the "
           "table): " + "; ".join(f"{k} C = {n:.2f} (nodal), {c:.2f} (points)" for k, (n, c) in by.items())
           + ". " + FOOTING_DISCUSSION_4_PRESSURE_LIMIT)
         w("")
@@ -1616,50 +1617,77 @@ def extrapolated_start(text):
     return replace_once(text, "newton: {", "newton: {predictor: extrapolated, ")
 
 
-def predictor_comparison(extrapolated, zero, scale, where, length="B"):
-    """A sentence on Newton's start in a rigid-plastic-limit study: the extrapolated runs' counts
-    and the zero start's on the same models (`where`: labels of the pairs, in order), with how far
-    their loads differ."""
-    parts, differences, fewer = [], [], []
-    for label, a, b in zip(where, extrapolated, zero):
-        if not (a.ok and b.ok):
-            why = stopped(a if not a.ok else b, scale).replace(" B ", f" {length} ")
-            parts.append(f"{label}: {'extrapolated' if not a.ok else 'zero start'} {why}")
-            continue
-        (amax, amean), (bmax, bmean) = a.iterations(), b.iterations()
-        steps = ""
-        if a.steps == b.steps:
-            qa, qb = a.curve(scale)[1], b.curve(scale)[1]
-            differences.append(float(np.max(np.abs(qa - qb)) / np.max(np.abs(qb))))
-        else:  # cut back differently: a different path of steps, the same load to its accuracy
-            end = min(a.curve(scale)[0][-1], b.curve(scale)[0][-1])
-            steps = (f", in {b.steps} steps from zero against {a.steps} (cut back differently), "
-                     f"q at {end:.3g} {length} {(a.q_at(scale, end) / b.q_at(scale, end) - 1) * 100:+.2f} % "
-                     "apart")
-        parts.append(f"{label}: at most {bmax} (mean {bmean:.1f}) from zero, {amax} ({amean:.1f}) "
-                     "extrapolated" + steps)
-        fewer.append(amean < bmean)
+def plastic_surface_start(text):
+    """A model whose soil reports the plastic side's tangent at points on the yield surface
+    (`surface_tangent: plastic`, docs/materials.md §1.7), so that Newton's first iterate from a
+    zero increment lets the last step's plastic zone flow."""
+    for model in ("model: tresca,", "model: mohr_coulomb,"):
+        if model in text:
+            return replace_once(text, model, model + " surface_tangent: plastic,")
+    raise ValueError("no Tresca or Mohr-Coulomb soil to give the plastic side's tangent")
+
+
+# Newton's starts in the rigid-plastic-limit studies: (short name, description).
+PLASTIC_SURFACE_START = ("with the plastic side's tangent",
+                         "from a zero increment with the plastic side's tangent at points on the "
+                         "yield surface (`surface_tangent: plastic`, docs/materials.md §1.7)")
+EXTRAPOLATED_START = ("extrapolated", "from the last step's increment extrapolated "
+                      "(`predictor: extrapolated`, docs/theory.md §4.5)")
+ELASTIC_SURFACE_START = ("with the elastic side's tangent",
+                         "from a zero increment with the elastic side's tangent (the examples' "
+                         "default)")
+
+
+def start_comparison(table, others, scale, where, length="B"):
+    """A paragraph on Newton's start in a rigid-plastic-limit study: the table's runs (`table`:
+    the start, a (short name, description) pair, and its runs) against the same models from
+    other starts (`others`: a list of such pairs), each pair of runs labelled by `where`, with how
+    far their loads differ."""
+    (table_name, table_start), table_runs = table
+    parts, differences = [], []
+    for i, label in enumerate(where):
+        a = table_runs[i]
+        counts = []
+        for (name, _), runs in [table] + others:
+            b = runs[i]
+            if not b.ok:
+                counts.append(f"{name}: " + stopped(b, scale).replace(" B ", f" {length} "))
+                continue
+            bmax, bmean = b.iterations()
+            counts.append(f"{bmax} (mean {bmean:.1f}) {name}")
+            if b is a or not a.ok:
+                continue
+            if a.steps == b.steps:
+                qa, qb = a.curve(scale)[1], b.curve(scale)[1]
+                differences.append(float(np.max(np.abs(qa - qb)) / np.max(np.abs(qb))))
+            else:  # cut back differently: a different path, the same load to its accuracy
+                end = min(a.curve(scale)[0][-1], b.curve(scale)[0][-1])
+                counts[-1] += (f" in {b.steps} steps against {a.steps}, q at {end:.3g} {length} "
+                               f"{(a.q_at(scale, end) / b.q_at(scale, end) - 1) * 100:+.2f} % apart")
+        parts.append(f"{label}: at most " + ", ".join(counts))
     largest = max(differences) if differences else None
     same = ("" if largest is None else
-            "; where both took the same steps their loads are identical to the ten digits of history.csv"
-            if largest == 0.0 else
-            f"; where both took the same steps their loads differ by at most {largest:.0e} of the "
-            "largest")
-    return ("*Newton's start.* These runs start each step from the last step's increment "
-            "extrapolated (`predictor: extrapolated`, docs/theory.md §4.5): the mechanism forms "
-            "and flows without any point crossing a cell, so the last increment is a good first "
-            "iterate, and the table's Newton counts are from that start. From a zero increment "
-            "(the examples' default, whose first iterate is elastic) the finest mesh takes "
-            + ("more iterations a step" if fewer and all(fewer) else "these iterations a step")
+            "; where two starts took the same steps their loads are identical to the ten digits "
+            "of history.csv" if largest == 0.0 else
+            f"; where two starts took the same steps their loads differ by at most {largest:.0e} "
+            "of the largest")
+    return ("*Newton's start.* These runs start each step " + table_start + ": the mechanism "
+            "forms and flows without any point crossing a cell, so the last step's plastic zone "
+            "is a good guide to the next, and the table's Newton counts are from that start. On "
+            "the finest mesh, the iterations a step with it and "
+            + " and ".join(start for (_, start), _ in others)
             + " — " + "; ".join(parts) + same + ".")
 
 
-def tresca_limit_text(file, n, vtk=False, nu=0.49, extrapolate=True):
+def tresca_limit_text(file, n, vtk=False, nu=0.49, start="plastic_surface"):
     """A Tresca footing example (mixed p-u) on stiff clay pushed TRESCA_STIFF_PUSH, on the mesh
-    with n cells under the half-width, Newton starting from the last step's increment
-    extrapolated unless not `extrapolate`; VTK output off unless `vtk`."""
+    with n cells under the half-width, Newton starting each step as `start` says
+    ("plastic_surface", "extrapolated" or "zero": PLASTIC_SURFACE_START, EXTRAPOLATED_START,
+    ELASTIC_SURFACE_START); VTK output off unless `vtk`."""
     t = replace_once(strip_mesh(example(file), n), "E: 500,", f"E: {TRESCA_STIFF_E},")
-    if extrapolate:
+    if start == "plastic_surface":
+        t = plastic_surface_start(t)
+    elif start == "extrapolated":
         t = extrapolated_start(t)
     if nu != 0.49:
         t = replace_once(t, "nu: 0.49,", f"nu: {nu},")
@@ -1682,8 +1710,10 @@ def tresca_rigid_plastic_limit(runner, prefix, files, references, scale, length,
 
     runs = runner.batch({f"{prefix}_{k}_{n}": tresca_limit_text(files[k], n) for k in KINDS
                          for n in levels})
-    zero = runner.batch({f"{prefix}_{k}_{levels[-1]}_zero": tresca_limit_text(
-        files[k], levels[-1], extrapolate=False) for k in KINDS})
+    others = [(name, runner.batch({f"{prefix}_{k}_{levels[-1]}{suffix}": tresca_limit_text(
+        files[k], levels[-1], start=start) for k in KINDS}))
+              for name, suffix, start in ((EXTRAPOLATED_START, "_extrapolated", "extrapolated"),
+                                          (ELASTIC_SURFACE_START, "_zero", "zero"))]
     w(intro)
     w("")
     w(limit_load_header("| footing | h |", "q/s_u", end, last, length))
@@ -1712,9 +1742,11 @@ def tresca_rigid_plastic_limit(runner, prefix, files, references, scale, length,
           + (" — **smooth ≤ rough: reached** in the rigid-plastic limit." if
              all(a <= b for _, a, b in pairs) else " — smooth ≤ rough not shown here either."))
         w("")
-    w(predictor_comparison([runs[f"{prefix}_{k}_{levels[-1]}"] for k in KINDS],
-                           [zero[f"{prefix}_{k}_{levels[-1]}_zero"] for k in KINDS], scale,
-                           [f"{LABEL[k]} on {length}/{2 * levels[-1]}" for k in KINDS], length))
+    w(start_comparison(
+        (PLASTIC_SURFACE_START, [runs[f"{prefix}_{k}_{levels[-1]}"] for k in KINDS]),
+        [(name, [batch[f"{prefix}_{k}_{levels[-1]}{suffix}"] for k in KINDS])
+         for (name, batch), suffix in zip(others, ("_extrapolated", "_zero"))], scale,
+        [f"{LABEL[k]} on {length}/{2 * levels[-1]}" for k in KINDS], length))
     w("")
     if averaged:
         w("The rigid footings with the cell-averaged volume change of the steel block "
@@ -1785,7 +1817,9 @@ def mohr_coulomb_rigid_plastic_limit(runner, mc_text, Nc):
     w = lines.append
     levels = (5, 10, 20, 40)
     cases = {n: mc_limit_text(mc_text, n) for n in levels}
-    runs = runner.batch({f"mc_stiff_{n}": extrapolated_start(t) for n, t in cases.items()})
+    runs = runner.batch({f"mc_stiff_{n}": plastic_surface_start(t) for n, t in cases.items()})
+    extrapolated_run = runner.batch({f"mc_stiff_{levels[-1]}":
+                                     extrapolated_start(cases[levels[-1]])})
     zero = runner.batch({f"mc_stiff_{levels[-1]}_zero": cases[levels[-1]]})
     S = -2.0
     end, last = MC_STIFF_PUSH, MC_STIFF_PUSH / 5
@@ -1821,8 +1855,10 @@ def mohr_coulomb_rigid_plastic_limit(runner, mc_text, Nc):
          if extrapolated else "; the values do not converge monotonically")
       + ".")
     w("")
-    w(predictor_comparison([runs[f"mc_stiff_{levels[-1]}"]], [zero[f"mc_stiff_{levels[-1]}_zero"]],
-                           S, [f"h = B/{2 * levels[-1]}"]))
+    w(start_comparison((PLASTIC_SURFACE_START, [runs[f"mc_stiff_{levels[-1]}"]]),
+                       [(EXTRAPOLATED_START, [extrapolated_run[f"mc_stiff_{levels[-1]}"]]),
+                        (ELASTIC_SURFACE_START, [zero[f"mc_stiff_{levels[-1]}_zero"]])],
+                       S, [f"h = B/{2 * levels[-1]}"]))
     w("")
     w(FOOTING_DISCUSSION_8_LIMIT)
     w("")
@@ -2950,11 +2986,12 @@ FOOTING_DISCUSSION_5_LIMIT = (
     "volume change under standard MPM's cell-wise shape functions as the points move within their "
     "cells; its mechanism we have not traced. The examples keep `per_point` for the reason of §4 "
     "(iv): with crossings, the average stopped the rigid runs before 0.1 B. From a zero start the "
-    "stiff clay's steps end in a slowly converging tail (linear convergence near a relative "
-    "residual of 10⁻⁸, the switch of §4 (iv) that the tangent does not see), and the smooth footing "
-    "with the rigid footings' cap of 10 Newton iterations stopped at 0.0041 B on h = B/40, level at "
-    "5.30 by then; so the cap is lifted to the steel block's 20 here, for both starts (column Newton "
-    "max and the comparison of the starts above). Asserted in "
+    "stiff clay's steps, with the elastic side's tangent at points on the yield surface, end in a "
+    "slowly converging tail (linear convergence near a relative residual of 10⁻⁸, the switch of "
+    "§4 (iv) that the tangent does not see), and the smooth footing with the rigid footings' cap of "
+    "10 Newton iterations stopped at 0.0041 B on h = B/40, level at 5.30 by then; so the cap is "
+    "lifted to the steel block's 20 here, for every start, and the column Newton max and the "
+    "comparison of the starts above show what each needs. Asserted in "
     "`tests/verification/test_footing_validation.cpp` for the rigid footings on h = B/10 and B/20 "
     "(levelled off, above 2 + π, falling with h, smooth ≤ rough).")
 
@@ -2986,13 +3023,10 @@ FOOTING_DISCUSSION_8_LIMIT = (
     "`tests/verification/test_footing_validation.cpp` on h = B/10, B/20 and B/40 at this stiffness "
     "(the creep falling with h and below 1 % on h = B/40, the error falling with h from above, the "
     "Richardson extrapolation within 3 % of N_c); the h = B/80 run (its time in the table) is in this "
-    "report only. *Newton*: the table's counts are from the extrapolated start (above). A zero "
-    "start with the plastic side's tangent at points on the yield surface instead of the elastic "
-    "side's (`surface_tangent: plastic`, docs/materials.md §1.7), which the test uses, carries the "
-    "same loads to six digits with at most 6, 7, 9 and 10 iterations a step on h = B/10, B/20, B/40 "
-    "and B/80 (measured by hand before this study used the extrapolated start; on B/80 mean 6.4, "
-    "68 s on one thread); the test runs the three coarser meshes so and asserts at most 10 "
-    "(docs/performance.md, finding 11).")
+    "report only. *Newton*: the table's counts are from a zero start with the plastic side's "
+    "tangent at points on the yield surface (`surface_tangent: plastic`, docs/materials.md §1.7), "
+    "as in the test, which runs the three coarser meshes so and asserts at most 10 "
+    "(docs/performance.md, finding 11); the other starts are compared above.")
 
 FOOTING_DISCUSSION_8 = (
     "**Why the band is missed with E = 1000 c.** Low-order cells with associated Mohr–Coulomb flow "
