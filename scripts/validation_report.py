@@ -704,13 +704,17 @@ def pressure_equation_incremental(runner, w, runs, cname, S):
       f"with the total equation; the points' pressure {min(p for p, t in points):.2f}–"
       f"{max(p for p, t in points):.2f} (total: {min(t for p, t in points):.2f}–"
       f"{max(t for p, t in points):.2f}). What remains is largest beside the footing's edge, "
-      "where the pressure is singular, and near the axis about 0.5 B down (right panel); it does "
-      "not shrink with smaller steps (measured by hand: the steel block at ν = 0.4999 with steps "
-      "of at most 0.00125 B, C = 0.12). "
+      "where the pressure is singular, and near the axis about 0.5 B down (right panel), mostly "
+      "single nodes off their neighbours where the mechanism's slip lines meet; it does not "
+      "shrink with smaller steps (measured by hand: the steel block at ν = 0.4999 with steps "
+      "of at most 0.00125 B, C = 0.12). Of the checkerboard mode itself little is left (docs/"
+      "theory.md §11, *Measured since*: its amplitude falls from 0.20–0.34 of the pressure with "
+      "the total equation to 0.03–0.08). "
       + (f"At 0.1 B the loads leave 5.14–5.40 for {', '.join(out_of_band)}"
          if out_of_band else "At 0.1 B every load is in 5.14–5.40")
       + (f"; the means over 0.08–0.1 B fall below 5.14 for {', '.join(below)}: the crossing dip "
-         "near 0.085 B is deeper than with the total equation" if below else "")
+         "near 0.085 B is deeper than with the total equation, from the rebuild of the start pressure "
+         "at nodes with a one-sided support (docs/theory.md §11, *Measured since*)" if below else "")
       + (f"; the steel block, whose example allows 20 Newton iterations without cutting the step "
          f"back, needs more than 10 in a step: {', '.join(over_ten)}" if over_ten else "")
       + ". The default stays the total equation, which the examples and the assertions of "
