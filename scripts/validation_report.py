@@ -429,6 +429,15 @@ def incremental_pressure(text):
     return out
 
 
+def stabilisation_floor(text, floor):
+    """The model with a floor of the exactly integrated pressure projection (docs/theory.md
+    eq. 11.10)."""
+    out, n = re.subn(r"^numerics: \{", f"numerics: {{pressure_stabilisation_floor: {floor:g}, ",
+                     text, count=1, flags=re.M)
+    assert n == 1, "no numerics line"
+    return out
+
+
 def structured(xy, values, box):
     """Nodal (or cell) values on the rectilinear array of their coordinates inside box."""
     (x0, y0), (x1, y1) = box
@@ -722,6 +731,95 @@ def pressure_equation_incremental(runner, w, runs, cname, S):
     w("")
 
 
+FLOORS = (0.1, 0.2)
+
+
+def pressure_stabilisation_floor_rows(runner, w, runs, cname, S):
+    """§4: the strip footings with a floor of the exact pressure projection (theory eq. 11.10),
+    with either pressure equation: the loads, the checkerboard measure and Newton, and which of
+    the targets each combination reaches."""
+    equations = (("total", lambda t: t), ("incremental", incremental_pressure))
+    cases = {f"{k}_{eq}_floor{f:g}_{nu}": stabilisation_floor(make(strip_text(k, nu, "mixed")), f)
+             for eq, make in equations for f in FLOORS for k in KINDS for nu in (0.49, 0.4999)}
+    floor_runs = runner.batch(cases)
+    w("**With a floor of the exact projection** (`numerics.pressure_stabilisation_floor`, "
+      "docs/theory.md eq. 11.10: a share of the projection (11.5) integrated exactly over each "
+      "cell is added to the points' sum, so that only the cell's constant pressures escape it "
+      "however the points cluster after crossings). The same six runs with either pressure "
+      "equation and two shares; the defaults are total and 0:")
+    w("")
+    w("| equation | floor | footing | ν | q/s_u at 0.1 B | mean over 0.08–0.1 B | C nodal | "
+      "C points | steps | Newton max / mean |")
+    w("|---|---|---|---|---|---|---|---|---|---|")
+    verdicts = []
+    for eq, _ in equations:
+        for f in FLOORS:
+            c_all, q_all, m_all, it_all, apart, done = [], [], [], [], [], True
+            for k in KINDS:
+                pair = []
+                for nu in (0.49, 0.4999):
+                    r = floor_runs[f"{k}_{eq}_floor{f:g}_{nu}"]
+                    if not r.ok:
+                        done = False
+                        w(f"| {eq} | {f:g} | {LABEL[k]} | {nu} | {stopped(r, S)} | | | | | |")
+                        continue
+                    cn, cp = checkerboard(nodal_pressure_grid(r)), checkerboard(cell_pressure_grid(r))
+                    q, m = r.q_at(S, 0.1), r.q_mean(S, 0.08, 0.1)
+                    itmax, itmean = r.iterations()
+                    c_all.append(cn)
+                    q_all.append(q)
+                    m_all.append(m)
+                    it_all.append(itmax)
+                    pair.append(q)
+                    w(f"| {eq} | {f:g} | {LABEL[k]} | {nu} | {q:.3f} | {m:.3f} | {cn:.3f} | "
+                      f"{cp:.3f} | {r.steps} | {itmax} / {itmean:.1f} |")
+                if len(pair) == 2:
+                    apart.append(abs(pair[0] / pair[1] - 1))
+            if not done:
+                verdicts.append(f"{eq}, floor {f:g}: not every run reached 0.1 B")
+                continue
+            checks = [
+                (max(c_all) < 0.1, f"C < 0.1 ({min(c_all):.3f}–{max(c_all):.3f})"),
+                (all(PRANDTL - 1e-9 <= q <= 5.40 for q in q_all),
+                 f"q at 0.1 B in 5.14–5.40 ({min(q_all):.2f}–{max(q_all):.2f})"),
+                (max(apart) < 0.02, f"ν-sensitivity < 2 % (at most {max(apart) * 100:.1f} %)"),
+                (all(PRANDTL - 1e-9 <= m <= 5.40 for m in m_all),
+                 f"means in the band ({min(m_all):.2f}–{max(m_all):.2f})"),
+                (max(it_all) <= 10, f"Newton ≤ 10 (at most {max(it_all)})")]
+            verdicts.append(f"{eq}, floor {f:g}: " + "; ".join(
+                f"{text}: {'reached' if ok else 'not reached'}" for ok, text in checks))
+    w("")
+    for v in verdicts:
+        w(f"- {v}.")
+    w("")
+    best = floor_runs.get(f"rough_incremental_floor{FLOORS[-1]:g}_0.4999")
+    default = runs[cname("rough", "mixed", 0.4999)]
+    if best is not None and best.ok and default.ok:
+        panels = []
+        for title, r in (("total (eq. 11.2), no floor", default),
+                         (f"incremental, floor {FLOORS[-1]:g} (eq. 11.10)", best)):
+            g = r.last_vtu("grid")
+            gx, gy = g.points[:, 0], g.points[:, 1]
+            gp = np.where((gx < 0.5 + 1e-9) & (gy > 4.9 + 1e-9), np.nan,
+                          g.point_data["pressure"].reshape(-1))
+            panels.append((f"rough, ν = 0.4999, {title}: nodal pressure", gx, gy, gp, (-2, 12)))
+        plot_pressure(os.path.join(FIGURES, "strip_footing_pressure_floor.png"), panels)
+        w("![nodal pressure, the default against the incremental equation with the floor]"
+          "(validation/strip_footing_pressure_floor.png)")
+        w("")
+    w("The floor is not the default yet. With the total equation it leaves the checkerboard as "
+      "it is, since there the pattern comes from the carried volume mismatch (above). But it "
+      "brings every load target of the band within reach (the lines above), the means over "
+      "0.08–0.1 B included, which the default misses for the smooth footing at ν = 0.4999. Making "
+      "it the default changes every validated mixed run, the circular footings' and the "
+      "large-deformation strip's too, so it is left for a change of its own. With the incremental "
+      "equation, C at 0.1 B is noisy in the share (by hand: 0.15 left the smooth footing at "
+      "ν = 0.49 at C = 0.16, and 0.3 stopped it at 0.060 B; docs/theory.md §11, *Measured "
+      "since*). The examples and the assertions of `tests/verification/test_footing_validation.cpp` "
+      "keep the defaults.")
+    w("")
+
+
 def section_footing(args, work):
     runner = Runner(args.binary, work, args.jobs)
     lines = []
@@ -993,6 +1091,7 @@ def section_footing(args, work):
           "well known)" if fbar_c[0] >= 0.1 else "") if fbar_c else "") + ".")
     w("")
     pressure_equation_incremental(runner, w, runs, cname, S)
+    pressure_stabilisation_floor_rows(runner, w, runs, cname, S)
     if limit_rows:
         limit_panels = []
         for k in ("rough", "rigid", "rigid_avg"):

@@ -21,6 +21,7 @@ GridSettings grid_settings(const Model& model) {
   s.buffer_layers = model.spec.numerics.buffer_layers;
   s.mixed_field_pressure = model.spec.numerics.mixed_field_pressure;
   s.mixed_incremental_pressure = model.spec.numerics.mixed_incremental_pressure;
+  s.pressure_stabilisation_floor = model.spec.numerics.pressure_stabilisation_floor;
   switch (model.spec.numerics.interpolation) {
     case spec::Interpolation::Standard:
       s.interpolation = GridInterpolation::Standard;

@@ -163,9 +163,10 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section = node.map(
-      {"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers", "lost_points",
-       "linear_solver", "mixed_volume", "mixed_material_pressure", "mixed_pressure_equation"});
+  const yaml::Map section =
+      node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
+                "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure",
+                "mixed_pressure_equation", "pressure_stabilisation_floor"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -178,6 +179,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   }
   if (auto stiffness = section.find("empty_cell_stiffness"))
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
+  if (auto floor = section.find("pressure_stabilisation_floor"))
+    numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {
     numerics.buffer_layers = layers->integer();
     if (numerics.buffer_layers < 0)

@@ -241,9 +241,10 @@ struct Numerics {
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
-  bool mixed_volume_average = true;         // mixed_volume: cell_average (F-bar) or per_point
-  bool mixed_field_pressure = false;        // mixed_material_pressure: field (theory §14) or own
-  bool mixed_incremental_pressure = false;  // mixed_pressure_equation: incremental or total
+  bool mixed_volume_average = true;           // mixed_volume: cell_average (F-bar) or per_point
+  bool mixed_field_pressure = false;          // mixed_material_pressure: field (theory §14) or own
+  bool mixed_incremental_pressure = false;    // mixed_pressure_equation: incremental or total
+  double pressure_stabilisation_floor = 0.0;  // share of the exact projection (theory eq. 11.10)
 };
 
 struct Model {

@@ -6,6 +6,7 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/physics/exact_pressure_projection.hpp"
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/mixed_point_kernel.hpp"
 #include "geompm/physics/point_kernel.hpp"
@@ -578,12 +579,18 @@ void GridSystem::pressure_stabilisation(const MaterialPoints& points, Index ci,
     }
   if (volume <= 0.0) return;
   mean /= volume;
+  double compliance = 0.0;  // sum of the points' v / G
   for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
     if (is_mixed(points, p)) {
       const double shear = materials_[points.material[p]]->elastic_moduli(points.internal[p]).shear;
       const Values d = Eigen::Map<const Values>(shape_.data() + std::size_t(p) * nen) - mean;
       S.noalias() += (strength * points.volume[p] / shear) * (d * d.transpose());
+      compliance += points.volume[p] / shear;
     }
+  // Eq. 11.10: a share of the exactly integrated projection, with the points' v / G, so that
+  // only the cell's constant pressures escape it however its points cluster.
+  if (const double floor = settings_.pressure_stabilisation_floor; floor > 0.0)
+    S.noalias() += (strength * floor * compliance) * exact_pressure_projection<E>();
 }
 
 template <class E>

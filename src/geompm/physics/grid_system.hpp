@@ -59,6 +59,9 @@ struct GridSettings {
   /// Mixed points tie the step's change of their material pressure to the field's (eq. 11.8), and
   /// the stabilisation acts on the step's pressure change (eq. 11.9), rather than the totals.
   bool mixed_incremental_pressure = false;
+  /// The share of the exactly integrated projection added to the points' sum in the pressure
+  /// stabilisation (theory eq. 11.10); 0: the points' sum alone (eq. 11.5).
+  double pressure_stabilisation_floor = 0.0;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in

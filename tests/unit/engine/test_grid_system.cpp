@@ -7,10 +7,13 @@
 // and mesh boundary, where they are clipped).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <map>
 #include <random>
 
 #include "geompm/boundary/rigid_footing.hpp"
+#include "geompm/physics/exact_pressure_projection.hpp"
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "run_model.hpp"
@@ -410,6 +413,16 @@ TEST(GridSystemVolumeAverage, DisplacementPointsShareItToo) {
   check_volume_average("column/column_3d.yaml", true, false);
 }
 
+// The oedometer example with its soil made mixed Tresca clay.
+auto mixed_tresca_oedometer() {
+  auto spec = testing::read_example("oedometer/oedometer.yaml");
+  for (auto& material : spec.materials) {
+    material.model = mixed_tresca.model;
+    material.parameters = mixed_tresca.parameters;
+  }
+  return spec;
+}
+
 // The incremental pressure equation (theory eqs. 11.8-11.9): a step starts in balance with what
 // the last one committed, however far the points' own volumes have drifted from the field's
 // pressure. The points carry a uniform pressure p0 (their total stress) while their elastic
@@ -419,11 +432,7 @@ TEST(GridSystemVolumeAverage, DisplacementPointsShareItToo) {
 // checkerboard of docs/validation.md §4); the incremental one sees none once each point carries
 // the mismatch it committed.
 TEST(GridSystemIncrementalPressure, AStepStartsInBalanceWithTheMismatchThePointsCarry) {
-  auto spec = testing::read_example("oedometer/oedometer.yaml");
-  for (auto& material : spec.materials) {
-    material.model = mixed_tresca.model;
-    material.parameters = mixed_tresca.parameters;
-  }
+  const auto spec = mixed_tresca_oedometer();
   auto model = build_model(spec);
   const double p0 = 3.0;
   std::mt19937 rng(5);
@@ -460,6 +469,72 @@ TEST(GridSystemIncrementalPressure, AStepStartsInBalanceWithTheMismatchThePoints
   EXPECT_GT(total, 1e-6);
   EXPECT_NEAR(first_step, total, 1e-9 * total);  // nothing carried yet: the same residual
   EXPECT_LT(next_step, 1e-10 * total);
+}
+
+// The floor of the pressure stabilisation (theory eq. 11.10). With every point of a cell on the
+// cell's horizontal mid-line (and no empty cells), the pressure that alternates from one row of
+// nodes to the next is zero at every point: the points' sum (11.5) and the pressure rows' own N N^T
+// / K term do not see it, and it is a null mode of the pressure block. The exactly integrated
+// projection does see it, so with a floor the block resists it, while a pressure constant over the
+// mesh still costs nothing more than before.
+TEST(GridSystemPressureStabilisation, TheFloorResistsAModeThePointsCannotSee) {
+  const auto spec = mixed_tresca_oedometer();
+  auto model = build_model(spec);
+  for (Index p = 0; p < model->points.size(); ++p) {  // onto the mid-line of the point's cell
+    const auto nodes = model->mesh.cell_nodes(model->points.cell[p]);
+    double middle = 0.0;
+    for (const Index n : nodes) middle += model->mesh.nodes[n].y() / nodes.size();
+    model->points.position[p].y() = middle;
+    model->points.local[p].y() = 0.0;
+  }
+  auto pressure_energy = [&](double floor, auto&& mode) {
+    GridSettings settings;
+    settings.kinematics = spec.kinematics;
+    settings.mixed.assign(spec.materials.size(), 1);
+    settings.volume_average.assign(spec.materials.size(), 0);
+    settings.pressure_stabilisation_floor = floor;
+    settings.buffer_layers = 0;  // no empty cells, whose regularisation (11.7) would see the mode
+    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    MaterialPoints points = model->points;
+    grid.initialise(points);
+    grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+    Vector f;
+    SparseMatrix K;
+    EXPECT_TRUE(grid.internal_force(points, Vector::Zero(grid.num_dofs()), f, &K));
+    Vector x = Vector::Zero(K.cols());
+    for (Index a = 0; a < static_cast<Index>(grid.active_nodes().size()); ++a)
+      x(grid.free_index()[grid.pressure_dof(a)]) = mode(model->mesh.nodes[grid.active_nodes()[a]]);
+    return x.dot(K * x) / x.squaredNorm();
+  };
+  const double h = 0.25;  // the example's cells are 0.25 m square
+  const auto rows = [h](const Vec3& x) { return std::lround(x.y() / h) % 2 == 0 ? 1.0 : -1.0; };
+  const auto constant = [](const Vec3&) { return 1.0; };
+  const double unseen = pressure_energy(0.0, rows);
+  const double resisted = pressure_energy(0.2, rows);
+  EXPECT_LT(std::abs(unseen), 1e-9 * resisted);
+  EXPECT_GT(resisted, 0.0);
+  EXPECT_NEAR(pressure_energy(0.2, constant), pressure_energy(0.0, constant),
+              1e-9 * std::abs(pressure_energy(0.0, constant)));
+}
+
+// The exact projection of each cell type: its null space is the constant pressures, and on a
+// Quad4 cell it is the closed form (1/36) [4 2 1 2; 2 4 2 1; 1 2 4 2; 2 1 2 4] - 1/16.
+TEST(GridSystemPressureStabilisation, TheExactProjectionKeepsOnlyConstants) {
+  const auto check = [](const auto& projection) {
+    const Eigen::MatrixXd p = projection;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(p);
+    EXPECT_LT((p * Eigen::VectorXd::Ones(p.rows())).norm(), 1e-14);
+    EXPECT_NEAR(eigen.eigenvalues()(0), 0.0, 1e-14);
+    EXPECT_GT(eigen.eigenvalues()(1), 1e-3);  // every non-constant pressure is penalised
+  };
+  check(exact_pressure_projection<Element<CellType::Tri3>>());
+  check(exact_pressure_projection<Element<CellType::Quad4>>());
+  check(exact_pressure_projection<Element<CellType::Tet4>>());
+  check(exact_pressure_projection<Element<CellType::Hex8>>());
+  Eigen::Matrix4d quad;
+  quad << 4, 2, 1, 2, 2, 4, 2, 1, 1, 2, 4, 2, 2, 1, 2, 4;
+  quad = quad / 36.0 - Eigen::Matrix4d::Constant(1.0 / 16.0);
+  EXPECT_LT((exact_pressure_projection<Element<CellType::Quad4>>() - quad).norm(), 1e-14);
 }
 
 // DDMP gradients and GIMP weights reproduce a linear displacement field exactly: a uniform

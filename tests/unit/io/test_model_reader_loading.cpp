@@ -77,6 +77,10 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const spec::Model incremental = read_model_from_string(
       kLoadingModel + "numerics: {mixed_pressure_equation: incremental}\n", "model.yaml");
   EXPECT_TRUE(incremental.numerics.mixed_incremental_pressure);
+  EXPECT_EQ(defaults.numerics.pressure_stabilisation_floor, 0.0);
+  const spec::Model floor = read_model_from_string(
+      kLoadingModel + "numerics: {pressure_stabilisation_floor: 0.2}\n", "model.yaml");
+  EXPECT_EQ(floor.numerics.pressure_stabilisation_floor, 0.2);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -367,6 +371,13 @@ const std::vector<LoadingCase> kLoadingCases = {
      "mixed_pressure_equation: incremental",
      "numerics.mixed_pressure_equation",
      "applies to mixed_material_pressure: own"},
+    {"pressure_stabilisation_floor_negative",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {pressure_stabilisation_floor: -0.1}\n"}},
+     "pressure_stabilisation_floor: -0.1",
+     "numerics.pressure_stabilisation_floor",
+     ">= 0"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
