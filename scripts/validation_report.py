@@ -651,6 +651,16 @@ def penalty_retry_table(runner, stalled, fine, means, finished, S):
     return lines
 
 
+def nodal_pressure_panel(run, title):
+    """A panel of plot_pressure: the nodal pressure at the end of a strip run to 0.1 B, without
+    the nodes inside the footing (above its base, under its width)."""
+    g = run.last_vtu("grid")
+    gx, gy = g.points[:, 0], g.points[:, 1]
+    gp = np.where((gx < 0.5 + 1e-9) & (gy > 4.9 + 1e-9), np.nan,
+                  g.point_data["pressure"].reshape(-1))
+    return (title, gx, gy, gp, (-2, 12))
+
+
 def pressure_equation_incremental(runner, w, runs, cname, S):
     """§4: the strip footings with the pressure equation over the step (theory eqs. 11.8-11.9)
     against the default total one: the loads, the checkerboard measure and Newton."""
@@ -687,16 +697,10 @@ def pressure_equation_incremental(runner, w, runs, cname, S):
               f"({t.q_mean(S, 0.08, 0.1):.3f}) | {cn:.3f} ({tn:.3f}) | {cp:.3f} ({tp:.3f}) | "
               f"{r.steps} | {itmax} / {itmean:.1f} |")
     w("")
-    panels = []
-    for title, r in (("total (eq. 11.2)", runs[cname("rough", "mixed", 0.4999)]),
-                     ("incremental (eq. 11.8)", incr["rough_incremental_0.4999"])):
-        if not r.ok:
-            continue
-        g = r.last_vtu("grid")
-        gx, gy = g.points[:, 0], g.points[:, 1]
-        gp = np.where((gx < 0.5 + 1e-9) & (gy > 4.9 + 1e-9), np.nan,
-                      g.point_data["pressure"].reshape(-1))
-        panels.append((f"rough, ν = 0.4999, {title}: nodal pressure", gx, gy, gp, (-2, 12)))
+    panels = [nodal_pressure_panel(r, f"rough, ν = 0.4999, {title}: nodal pressure")
+              for title, r in (("total (eq. 11.2)", runs[cname("rough", "mixed", 0.4999)]),
+                               ("incremental (eq. 11.8)", incr["rough_incremental_0.4999"]))
+              if r.ok]
     if len(panels) == 2:
         plot_pressure(os.path.join(FIGURES, "strip_footing_pressure_incremental.png"), panels)
         w("![nodal pressure, total against incremental pressure equation]"
@@ -795,14 +799,9 @@ def pressure_stabilisation_floor_rows(runner, w, runs, cname, S):
     best = floor_runs.get(f"rough_incremental_floor{FLOORS[-1]:g}_0.4999")
     default = runs[cname("rough", "mixed", 0.4999)]
     if best is not None and best.ok and default.ok:
-        panels = []
-        for title, r in (("total (eq. 11.2), no floor", default),
-                         (f"incremental, floor {FLOORS[-1]:g} (eq. 11.10)", best)):
-            g = r.last_vtu("grid")
-            gx, gy = g.points[:, 0], g.points[:, 1]
-            gp = np.where((gx < 0.5 + 1e-9) & (gy > 4.9 + 1e-9), np.nan,
-                          g.point_data["pressure"].reshape(-1))
-            panels.append((f"rough, ν = 0.4999, {title}: nodal pressure", gx, gy, gp, (-2, 12)))
+        panels = [nodal_pressure_panel(r, f"rough, ν = 0.4999, {title}: nodal pressure")
+                  for title, r in (("total (eq. 11.2), no floor", default),
+                                   (f"incremental, floor {FLOORS[-1]:g} (eq. 11.10)", best))]
         plot_pressure(os.path.join(FIGURES, "strip_footing_pressure_floor.png"), panels)
         w("![nodal pressure, the default against the incremental equation with the floor]"
           "(validation/strip_footing_pressure_floor.png)")
