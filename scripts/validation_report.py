@@ -815,7 +815,8 @@ def pressure_stabilisation_floor_rows(runner, w, runs, cname, S):
       "eq. 11.10 lists the other runs tried). With the incremental "
       "equation, C at 0.1 B is noisy in the share (by hand: 0.15 left the smooth footing at "
       "ν = 0.49 at C = 0.16, and 0.3 stopped it at 0.060 B; docs/theory.md §11, *Measured "
-      "since*). The examples and the assertions of `tests/verification/test_footing_validation.cpp` "
+      "since*), and with 0.2 it stops the circular footings of §7 before 0.1 D (docs/theory.md "
+      "eq. 11.10). The examples and the assertions of `tests/verification/test_footing_validation.cpp` "
       "keep the defaults.")
     w("")
 
