@@ -22,6 +22,7 @@ GridSettings grid_settings(const Model& model) {
   s.mixed_field_pressure = model.spec.numerics.mixed_field_pressure;
   s.mixed_incremental_pressure = model.spec.numerics.mixed_incremental_pressure;
   s.pressure_stabilisation_floor = model.spec.numerics.pressure_stabilisation_floor;
+  s.fitted_pressure_start = model.spec.numerics.fitted_pressure_start;
   switch (model.spec.numerics.interpolation) {
     case spec::Interpolation::Standard:
       s.interpolation = GridInterpolation::Standard;

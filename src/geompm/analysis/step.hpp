@@ -54,8 +54,12 @@ class StepSolver {
   GridSystem& grid() { return grid_; }
 
   /// Forgets the last step's increment, so that the phase's first step does not extrapolate the
-  /// previous phase's path (`newton: {predictor: extrapolated}`).
-  void start_phase() { last_rate_.clear(); }
+  /// previous phase's path (`newton: {predictor: extrapolated}`), and the last nodal pressure
+  /// (`mixed_pressure_start: fitted`), so that it starts from its points' pressures.
+  void start_phase() {
+    last_rate_.clear();
+    grid_.forget_pressure_field();
+  }
 
  private:
   bool extrapolated_start(double dt, Vector& x) const;

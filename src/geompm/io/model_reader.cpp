@@ -166,7 +166,7 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   const yaml::Map section =
       node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
                 "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure",
-                "mixed_pressure_equation", "pressure_stabilisation_floor"});
+                "mixed_pressure_equation", "pressure_stabilisation_floor", "mixed_pressure_start"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -204,6 +204,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
           "volume mismatch over the steps, docs/theory.md §14); 'incremental' applies to "
           "mixed_material_pressure: own");
   }
+  if (auto start = section.find("mixed_pressure_start"))
+    numerics.fitted_pressure_start = start->choice({"points", "fitted"}) == "fitted";
   if (auto solver = section.find("linear_solver"))
     numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
   return numerics;

@@ -245,6 +245,7 @@ struct Numerics {
   bool mixed_field_pressure = false;          // mixed_material_pressure: field (theory §14) or own
   bool mixed_incremental_pressure = false;    // mixed_pressure_equation: incremental or total
   double pressure_stabilisation_floor = 0.0;  // share of the exact projection (theory eq. 11.10)
+  bool fitted_pressure_start = false;         // mixed_pressure_start: fitted (eq. 11.11) or points
 };
 
 struct Model {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
@@ -10,6 +11,7 @@
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/mixed_point_kernel.hpp"
 #include "geompm/physics/point_kernel.hpp"
+#include "geompm/physics/pressure_start_fit.hpp"
 
 namespace geompm {
 
@@ -265,6 +267,31 @@ void GridSystem::initialise_pressure(const MaterialPoints& points) {
     if (weight(a) > 0.0) pressure_start_(a) /= weight(a);
   pressure_scale_ = count > 0 ? shear / (size / count) : 1.0;
   reference_bulk_ = count > 0 ? bulk : 1.0;
+  if (!settings_.fitted_pressure_start) return;
+  // Eq. 11.11: where the last converged field is known and the node's support is well filled,
+  // start from that field smoothed by the local linear fit; elsewhere from the points.
+  mark_supported_pressure_nodes();
+  if (last_pressure_.size() == std::size_t(mesh_.num_nodes()))
+    fit_pressure_start(mesh_, active_cells_, active_nodes_, node_to_active_, last_pressure_,
+                       pressure_supported_, pressure_start_);
+}
+
+void GridSystem::mark_supported_pressure_nodes() {
+  // A node is well supported when every cell around it is active and at least half filled by
+  // mixed points: at the free surface, the heave and the footing's base its pressure is poorly
+  // determined, and its last value would be carried on by the fit of eq. 11.11.
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  std::vector<Index> active_cells_around(n_nodes, 0);
+  pressure_supported_.assign(n_nodes, 1);
+  for (std::size_t ci = 0; ci < active_cells_.size(); ++ci)
+    for (Index node : mesh_.cell_nodes(active_cells_[ci])) {
+      const Index a = node_to_active_[node];
+      ++active_cells_around[a];
+      if (cell_mixed_fill_[ci] < 0.5) pressure_supported_[a] = 0;
+    }
+  for (Index a = 0; a < n_nodes; ++a)
+    if (active_cells_around[a] < Index(topology_.node_cells.row(active_nodes_[a]).size()))
+      pressure_supported_[a] = 0;
 }
 
 Vector GridSystem::nodal_pressure(const Vector& x) const {
@@ -1045,6 +1072,13 @@ bool GridSystem::commit_state(MaterialPoints& points, const Vector& du) {
 
 void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
                          const Vector& acceleration, double dt, bool dynamic) {
+  if (mixed_ && settings_.fitted_pressure_start) {
+    // Eq. 11.11: the converged nodal pressure, where it was well supported, for the next start.
+    last_pressure_.assign(mesh_.num_nodes(), std::numeric_limits<double>::quiet_NaN());
+    const Vector p = nodal_pressure(du);
+    for (std::size_t a = 0; a < active_nodes_.size(); ++a)
+      if (pressure_supported_[a]) last_pressure_[active_nodes_[a]] = p(a);
+  }
   commit_state(points, du);
   dispatch_cell_type(mesh_.cell_type, [&](auto e) {
     convect_typed<decltype(e)>(points, du, velocity, acceleration, dt, dynamic);

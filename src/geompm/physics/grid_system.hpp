@@ -62,6 +62,10 @@ struct GridSettings {
   /// The share of the exactly integrated projection added to the points' sum in the pressure
   /// stabilisation (theory eq. 11.10); 0: the points' sum alone (eq. 11.5).
   double pressure_stabilisation_floor = 0.0;
+  // Mixed p-u: start each step from the last converged nodal pressure smoothed by a local linear
+  // least-squares fit where it was well supported (theory eq. 11.11), rather than from the
+  // points' pressures (eq. 11.6).
+  bool fitted_pressure_start = false;
 };
 
 /// A force on the points of a point set (bit `set` of MaterialPoints::sets), shared in
@@ -131,6 +135,9 @@ class GridSystem {
   /// §2).
   void convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
                const Vector& acceleration, double dt, bool dynamic);
+  /// Forgets the last converged nodal pressure (eq. 11.11), so that a phase's first step starts
+  /// from its points' pressures.
+  void forget_pressure_field() { last_pressure_.clear(); }
 
   // --- grid data --------------------------------------------------------------------------
   int dim() const { return dim_; }
@@ -301,6 +308,11 @@ class GridSystem {
   double pressure_scale_ = 1.0;  // s = G / h (eq. 11.6)
   double reference_bulk_ = 1.0;  // K of the pressure regularisation of empty space
   Vector pressure_start_;        // nodal pressure at the start of the step
+  // Eq. 11.11: the last converged nodal pressure per mesh node where its support was well filled
+  // (NaN elsewhere), and which active nodes of this step are so.
+  std::vector<double> last_pressure_;
+  std::vector<char> pressure_supported_;
+  void mark_supported_pressure_nodes();
   int cell_dofs() const { return nen_ * dim_ + (mixed_ ? nen_ : 0); }
 
   Index num_free_ = 0;

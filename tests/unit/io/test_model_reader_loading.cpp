@@ -81,6 +81,10 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const spec::Model floor = read_model_from_string(
       kLoadingModel + "numerics: {pressure_stabilisation_floor: 0.2}\n", "model.yaml");
   EXPECT_EQ(floor.numerics.pressure_stabilisation_floor, 0.2);
+  EXPECT_FALSE(defaults.numerics.fitted_pressure_start);
+  const spec::Model fitted = read_model_from_string(
+      kLoadingModel + "numerics: {mixed_pressure_start: fitted}\n", "model.yaml");
+  EXPECT_TRUE(fitted.numerics.fitted_pressure_start);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -371,6 +375,13 @@ const std::vector<LoadingCase> kLoadingCases = {
      "mixed_pressure_equation: incremental",
      "numerics.mixed_pressure_equation",
      "applies to mixed_material_pressure: own"},
+    {"mixed_pressure_start_unknown",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {mixed_pressure_start: last}\n"}},
+     "mixed_pressure_start: last",
+     "numerics.mixed_pressure_start",
+     "expected one of: points, fitted"},
     {"pressure_stabilisation_floor_negative",
      {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
        "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
