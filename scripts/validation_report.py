@@ -814,10 +814,16 @@ def fitted_pressure_start_rows(runner, w, runs, cname, S):
     w("Beside the rebuilt start of the incremental equation (above), the fitted one removes the "
       "crossing dip, since it has no bias at the nodes with a one-sided support, and keeps the "
       "damping of the node-to-node patterns that the last field alone does not have (docs/"
-      "theory.md §11). It is not the default: on the circular footings of §7 it is no better "
-      "everywhere (by hand, docs/theory.md eq. 11.11: the rough rigid footing on h = D/40 "
-      "reaches 0.1 D at 6.26, +3.5 % from N_c, but the smooth one on h = D/20 stops at 0.087 D), "
-      "and the other sections have not been run with it.")
+      "theory.md §11). The picture is smooth (right panel); what C still counts is spread over "
+      "single nodes near the axis and beside the footing's edge. On the finer mesh of §5 "
+      "(h = B/40, ν = 0.49; by hand, docs/theory.md eq. 11.11) it lifts the loads the total "
+      "equation leaves below the band: the steel block carries 5.27 at 0.1 B (mean 5.17; total "
+      "5.00) with C = 0.08, the rough rigid footing 5.13 (mean 5.13; total 4.91), but the smooth "
+      "rigid footing stops at 0.034 B, Newton stalling at the node on the footing's edge. It is "
+      "not the default: the smooth rigid footings stop with it (also on the circular footing "
+      "of §7 on h = D/20, at 0.087 D, which the default passes; the rough rigid one on h = D/40 "
+      "reaches 0.1 D at 6.26, +3.5 % from N_c), and the sections after §4 have not been run "
+      "with it.")
     w("")
 
 
