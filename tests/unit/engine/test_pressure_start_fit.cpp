@@ -57,8 +57,9 @@ TEST(PressureStartFit, KeepsLinearFieldsAtEveryNode) {
 
 TEST(PressureStartFit, DampsTheCheckerboardAndTheStripes) {
   // Interior nodes of a uniform Quad4 grid: the fit's value is the mean over the 3 x 3 patch
-  // (its gradient terms vanish by symmetry), so a checkerboard keeps (1 - 2 + ... ) = 1/9 of its
-  // amplitude, and a stripe alternating between rows keeps -1/3.
+  // (its gradient terms vanish by symmetry): for a checkerboard, 5 of the 9 values have the
+  // centre's sign and 4 the other, so it keeps 1/9 of its amplitude; a stripe alternating
+  // between rows (3 values of the centre's sign, 6 of the other) keeps -1/3.
   const Grid g = grid_of(CellType::Quad4, 2, false);
   const double h = 1.0 / 8.0;
   const auto parity = [h](double x) { return int(std::lround(x / h)) % 2 == 0 ? 1.0 : -1.0; };
