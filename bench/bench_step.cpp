@@ -13,8 +13,9 @@
 //                    the memory per point: heap held by each stage, peak resident set of a step
 //
 // internal_force (1 thread), factorize_solve and step also run with the soil in the mixed p-u
-// formulation, with per-point and cell-averaged volume change and with the material at the
-// field's pressure (".../formulation:<name>"), at the sizes below 300 cells per side.
+// formulation, with per-point and cell-averaged volume change, with the material at the field's
+// pressure, and with the incremental pressure equation started from the fitted last pressure
+// (".../formulation:<name>"), at the sizes below 300 cells per side.
 //
 // Benchmarks are registered size by size, so one model is in memory at a time. Every timing is
 // wall-clock (the loops are OpenMP-parallel) and repeated; the doc reports the medians. The CPU
@@ -210,7 +211,7 @@ void register_all() {
     if (cells >= 300) continue;
     const std::string size = "/cells:" + std::to_string(cells);
     for (Formulation f : {Formulation::MixedPerPoint, Formulation::MixedCellAverage,
-                          Formulation::MixedFieldPressure}) {
+                          Formulation::MixedFieldPressure, Formulation::MixedIncrementalFitted}) {
       const std::string tag = std::string("/formulation:") + formulation_name(f);
       timed(benchmark::RegisterBenchmark(("internal_force" + size + "/threads:1" + tag).c_str(),
                                          internal_force, cells, 1, f));

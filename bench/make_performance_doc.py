@@ -376,11 +376,16 @@ def main():
           "the default) every mixed point's dF and B are also computed once more, for its "
           "cell's average, and the tangent gains the average's coupling terms. At the field's "
           "pressure (`mixed_material_pressure: field`, §14, with the cell average) each point's "
-          "material is updated once per iteration of its volume solve (eq. 14.1). "
+          "material is updated once per iteration of its volume solve (eq. 14.1). With the "
+          "incremental pressure equation and the fitted start (`mixed_pressure_equation: "
+          "incremental`, `mixed_pressure_start: fitted`, eqs. 11.8 and 11.11), each step also "
+          "fits the last nodal pressure around every node (a small least-squares solve a node). "
           "Medians, ms; × = against the displacement formulation at the same size.\n")
         variants = [("displacement", ""), ("mixed, per point", "#mixed_per_point"),
                     ("mixed, cell average", "#mixed_cell_average"),
-                    ("mixed, at the field's pressure", "#mixed_field_pressure")]
+                    ("mixed, at the field's pressure", "#mixed_field_pressure"),
+                    ("mixed, cell average, incremental, fitted start",
+                     "#mixed_incremental_fitted")]
         w("| size | formulation | free unknowns | tangent non-zeros | internal force (1 thread) "
           "| factorise + solve | whole step | Newton iterations |")
         w("|---|---|---|---|---|---|---|---|")

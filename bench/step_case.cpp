@@ -20,6 +20,8 @@ const char* formulation_name(Formulation f) {
       return "mixed_cell_average";
     case Formulation::MixedFieldPressure:
       return "mixed_field_pressure";
+    case Formulation::MixedIncrementalFitted:
+      return "mixed_incremental_fitted";
   }
   return "";
 }
@@ -44,8 +46,11 @@ spec::Model block_under_gravity(int cells, Formulation formulation) {
                              mixed ? spec::Formulation::Mixed : spec::Formulation::Displacement,
                              {}});
   model.numerics.mixed_volume_average = formulation == Formulation::MixedCellAverage ||
-                                        formulation == Formulation::MixedFieldPressure;
+                                        formulation == Formulation::MixedFieldPressure ||
+                                        formulation == Formulation::MixedIncrementalFitted;
   model.numerics.mixed_field_pressure = formulation == Formulation::MixedFieldPressure;
+  model.numerics.mixed_incremental_pressure = model.numerics.fitted_pressure_start =
+      formulation == Formulation::MixedIncrementalFitted;
 
   spec::Body body;
   body.name = "block";

@@ -24,7 +24,15 @@ namespace geompm::bench {
 /// How the block's soil is formulated: the displacement formulation, or the mixed p-u one
 /// (docs/theory.md §11) with each point's own volume change or its cell's average (F-bar, §12).
 /// MixedFieldPressure: the cell average with the material at the field's pressure (theory §14).
-enum class Formulation { Displacement, MixedPerPoint, MixedCellAverage, MixedFieldPressure };
+/// MixedIncrementalFitted: the cell average with the incremental pressure equation (eq. 11.8)
+/// started from the last nodal pressure fitted (eq. 11.11).
+enum class Formulation {
+  Displacement,
+  MixedPerPoint,
+  MixedCellAverage,
+  MixedFieldPressure,
+  MixedIncrementalFitted
+};
 const char* formulation_name(Formulation f);
 
 /// The benchmark model with `cells` x `cells` cells (4 (cells - 1) cells material points); in
