@@ -421,21 +421,28 @@ def strip_text_dense(kind, n=10, per_cell=9, nu=0.49, vtk=False):
     return dense_points(strip_text(kind, nu=nu, n=n), per_cell, vtk)
 
 
-def incremental_pressure(text):
-    """The model with the pressure equation over the step (docs/theory.md eqs. 11.8-11.9)."""
-    out, n = re.subn(r"^numerics: \{", "numerics: {mixed_pressure_equation: incremental, ", text,
-                     count=1, flags=re.M)
+def with_numerics(text, setting):
+    """The model with `setting` ("key: value") put first in its numerics map."""
+    out, n = re.subn(r"^numerics: \{", f"numerics: {{{setting}, ", text, count=1, flags=re.M)
     assert n == 1, "no numerics line"
     return out
+
+
+def incremental_pressure(text):
+    """The model with the pressure equation over the step (docs/theory.md eqs. 11.8-11.9)."""
+    return with_numerics(text, "mixed_pressure_equation: incremental")
 
 
 def stabilisation_floor(text, floor):
     """The model with a floor of the exactly integrated pressure projection (docs/theory.md
     eq. 11.10)."""
-    out, n = re.subn(r"^numerics: \{", f"numerics: {{pressure_stabilisation_floor: {floor:g}, ",
-                     text, count=1, flags=re.M)
-    assert n == 1, "no numerics line"
-    return out
+    return with_numerics(text, f"pressure_stabilisation_floor: {floor:g}")
+
+
+def fitted_start(text):
+    """The model starting each step from the last nodal pressure, fitted (docs/theory.md
+    eq. 11.11)."""
+    return with_numerics(text, "mixed_pressure_start: fitted")
 
 
 def structured(xy, values, box):
@@ -772,15 +779,6 @@ def strip_variant_rows(w, run_of, lead, S):
     return "; ".join(f"{text}: {'reached' if ok else 'not reached'}" for ok, text in checks)
 
 
-def fitted_start(text):
-    """The model starting each step from the last nodal pressure, fitted (docs/theory.md
-    eq. 11.11)."""
-    out, n = re.subn(r"^numerics: \{", "numerics: {mixed_pressure_start: fitted, ", text, count=1,
-                     flags=re.M)
-    assert n == 1, "no numerics line"
-    return out
-
-
 def fitted_pressure_start_rows(runner, w, runs, cname, S):
     """§4: the strip footings with the incremental pressure equation started from the last
     converged nodal pressure fitted (theory eq. 11.11): the loads, the checkerboard measure,
@@ -816,11 +814,10 @@ def fitted_pressure_start_rows(runner, w, runs, cname, S):
       "damping of the node-to-node patterns that the last field alone does not have (docs/"
       "theory.md §11). The picture is smooth (right panel); what C still counts is spread over "
       "single nodes near the axis and beside the footing's edge. On the finer mesh of §5 "
-      "(h = B/40, ν = 0.49; by hand, docs/theory.md eq. 11.11) it lifts the loads the total "
-      "equation leaves below the band: the steel block carries 5.27 at 0.1 B (mean 5.17; total "
-      "5.00) with C = 0.08, the rough rigid footing 5.13 (mean 5.13; total 4.91), but the smooth "
-      "rigid footing stops at 0.034 B, Newton stalling at the node on the footing's edge. It is "
-      "not the default: the smooth rigid footings stop with it (also on the circular footing "
+      "(h = B/40, the refinement with it there) it lifts the loads the total equation leaves "
+      "below the band, but the smooth rigid footing stops, Newton stalling at the node on the "
+      "footing's edge. It is not the default: the smooth rigid footings stop with it (also on "
+      "the circular footing "
       "of §7 on h = D/20, at 0.087 D, which the default passes; the rough rigid one on h = D/40 "
       "reaches 0.1 D at 6.26, +3.5 % from N_c), and the sections after §4 have not been run "
       "with it.")

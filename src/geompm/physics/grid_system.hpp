@@ -62,9 +62,9 @@ struct GridSettings {
   /// The share of the exactly integrated projection added to the points' sum in the pressure
   /// stabilisation (theory eq. 11.10); 0: the points' sum alone (eq. 11.5).
   double pressure_stabilisation_floor = 0.0;
-  // Mixed p-u: start each step from the last converged nodal pressure smoothed by a local linear
-  // least-squares fit where it was well supported (theory eq. 11.11), rather than from the
-  // points' pressures (eq. 11.6).
+  /// Mixed p-u: start each step from the last converged nodal pressure smoothed by a local linear
+  /// least-squares fit where it was well supported (theory eq. 11.11), rather than from the
+  /// points' pressures (eq. 11.6).
   bool fitted_pressure_start = false;
 };
 
