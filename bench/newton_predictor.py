@@ -4,11 +4,12 @@ surface (`surface_tangent: plastic`, docs/materials.md §1.7), and extrapolated 
 {predictor: extrapolated}`, docs/theory.md §4.5), on example models run to their end with
 `geompm run -t 1`.
 
-    /usr/bin/python3 bench/newton_predictor.py [--build-dir build] [--repetitions 3]
+    /usr/bin/python3 bench/newton_predictor.py [--build-dir build] [--repetitions 3] [--only TEXT]
 
 Writes bench/predictor_timings.md (steps, Newton iterations, the most in a step, the median wall
 time over the repetitions, and the largest difference of the model's load history between the two
-starts); docs/performance.md carries it (bench/performance_notes.md marks where).
+starts); docs/performance.md carries it (bench/performance_notes.md marks where). With --only,
+just the models whose example path contains TEXT are run, and their rows replaced in the table.
 """
 import argparse
 import os
@@ -104,11 +105,15 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build-dir", default="build")
     parser.add_argument("--repetitions", type=int, default=3)
+    parser.add_argument("--only", action="append", default=[],
+                        help="run only the models whose example path contains this (repeatable)")
     args = parser.parse_args()
     binary = os.path.join(ROOT, args.build_dir, "geompm")
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for label, example, column in MODELS:
+            if args.only and not any(part in example for part in args.only):
+                continue
             text = model_text(example)
             zero = text.replace("predictor: extrapolated, ", "")
             variants = {"zero": zero,
@@ -164,11 +169,24 @@ def main():
     def history(d):
         return ("other steps" if d != d else "identical as printed" if d == 0 else f"{d:.1e}")
 
+    new_rows = {}
     for label, example, result, differences in rows:
-        lines.append(f"| {label} (`{example}`) | {cells(result['zero'])} | "
-                     f"{cells(result['plastic'])} | {history(differences['plastic'])} | "
-                     f"{cells(result['extrapolated'])} | {history(differences['extrapolated'])} |")
-    with open(os.path.join(ROOT, "bench", "predictor_timings.md"), "w") as f:
+        new_rows[example] = (f"| {label} (`{example}`) | {cells(result['zero'])} | "
+                             f"{cells(result['plastic'])} | {history(differences['plastic'])} | "
+                             f"{cells(result['extrapolated'])} | "
+                             f"{history(differences['extrapolated'])} |")
+    path = os.path.join(ROOT, "bench", "predictor_timings.md")
+    if args.only:
+        # The other rows as they were measured last: replace only the rows run now.
+        with open(path) as f:
+            lines = f.read().rstrip("\n").split("\n")
+        for k, line in enumerate(lines):
+            for example, row in new_rows.items():
+                if f"(`{example}`)" in line:
+                    lines[k] = row
+    else:
+        lines += list(new_rows.values())
+    with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote bench/predictor_timings.md")
 
