@@ -618,6 +618,12 @@ def at_tenth(r, scale):
     return (r.q_at(scale, 0.1), r.q_mean(scale, 0.08, 0.1), *r.iterations())
 
 
+def tenth_or_nan(r, scale):
+    """q at a settlement of 0.1 (B or D) and its mean over 0.08-0.1, NaN for a run that stopped."""
+    return ((r.q_at(scale, 0.1), r.q_mean(scale, 0.08, 0.1)) if r.ok
+            else (float("nan"), float("nan")))
+
+
 def verdict(ok):
     return "reached" if ok else "not reached"
 
@@ -888,9 +894,7 @@ def fitted_refinement(runner, w, levels, S):
         means = []
         for n in levels:
             r = runs[f"{LABEL[k]}_n{n}_incremental_fitted"]
-            t = totals[f"{LABEL[k]}_n{n}_total"]
-            q0, m0 = ((t.q_at(S, 0.1), t.q_mean(S, 0.08, 0.1)) if t.ok
-                      else (float("nan"), float("nan")))
+            q0, m0 = tenth_or_nan(totals[f"{LABEL[k]}_n{n}_total"], S)
             if not r.ok:
                 w(f"| {LABEL[k]} | B/{2 * n} | {stopped(r, S)} | | | | | {r.wall:.0f} s |")
                 finest[k] = f"{LABEL[k]} {stopped(r, S)} at h = B/{2 * n}"
@@ -1407,9 +1411,7 @@ def section_footing(args, work):
     for rough in KINDS:
         for n in levels:
             r = dense[f"{LABEL[rough]}_n{n}_p9"]
-            t = conv_total[f"{LABEL[rough]}_n{n}"]
-            q2, m2 = ((t.q_at(S, 0.1), t.q_mean(S, 0.08, 0.1)) if t.ok
-                      else (float("nan"), float("nan")))
+            q2, m2 = tenth_or_nan(conv_total[f"{LABEL[rough]}_n{n}"], S)
             if not r.ok:
                 w(f"| {LABEL[rough]} | B/{2 * n} | {q2:.3f} | {stopped(r, S)} | {m2:.3f} | | | | "
                   f"{r.wall:.0f} s |")
