@@ -26,11 +26,13 @@
 //   large-deformation strip to 1 B (docs/validation.md §6, §7). The steel block's and the rough
 //   rigid strip's examples use it started from the fitted last pressure (eq. 11.11), the smooth
 //   rigid strip's the total equation (§4).
-// Not asserted: the footings at h = B/40 (below the band with 2x2 points per cell, whose
-// quadrature is too soft after cell crossings; with 3x3 points they converge from above,
-// docs/validation.md §5) and with more points per cell at h = B/20 (above the band, §5); the
-// smooth rigid footing's mean over 0.08-0.1 B at nu = 0.4999 against 5.40 (5.42, 0.3 % above,
-// reported in §4); smooth <= rough at 0.1 B, which the rigid footings do not show there (§4).
+// Not asserted: the footings at h = B/40 (with the total pressure equation below the band with
+// 2x2 points per cell, whose quadrature is too soft after cell crossings, with 3x3 points they
+// converge from above; with the examples' incremental equation and fitted start the steel block
+// is in the band and the rough rigid footing 0.3 % below it; docs/validation.md §5) and with more
+// points per cell at h = B/20 (above the band, §5); the smooth rigid footing's mean over 0.08-0.1 B
+// at nu = 0.4999 against 5.40 (5.42, 0.3 % above, reported in §4); smooth <= rough at 0.1 B, which
+// the rigid footings do not show there (§4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
