@@ -2,9 +2,11 @@
 // bearing capacity factors (docs/validation.md §9): the models of examples/frictional_footing/,
 // displacement formulation. What is asserted, and why:
 // - N_q (weightless soil, surcharge q0 beside a smooth footing) against Prandtl-Reissner's
-//   N_q = e^(pi tan phi) tan^2(45 + phi/2) = 18.40: at h = B/20 and B/10 the over-estimate that
-//   docs/validation.md §9 measured, falling with h; at h = B/40 the load levels off within the
-//   accuracy reached there; at h = B/80 it is within +5 % of N_q (the target).
+//   N_q = e^(pi tan phi) tan^2(45 + phi/2) = 18.40, read at a settlement of 0.01 B (the load
+//   does not level off: the dilating soil heaves beside the footing): at h = B/20 and B/10 the
+//   over-estimate that docs/validation.md §9 measured, falling with h; at h = B/40 within +8 %;
+//   at h = B/80 within +5 % of N_q (the target). Newton takes at most 10 iterations in
+//   every step of these runs (the target through plastic flow).
 //   In the rigid-plastic limit (stiff sand, no point crossing a cell) the over-estimate falls
 //   with h from above and the Richardson extrapolation lands within 3 % of N_q.
 // - N_gamma (self-weight, rough steel block and smooth top row of points) against Martin (2005):
@@ -13,9 +15,9 @@
 //   N_gamma itself is reported as not reached (§9). At phi = 20 deg, where the dilatancy locking
 //   is weaker, the rough footing's load falls with h from above towards Martin's 2.84 and its
 //   curve flattens, nearly levelling off on h = B/40 (N_gamma not reached either).
-// The runs stop before the end of their push (a point's volume <= 0, or Newton at the smallest
+// Most runs stop before the end of their push (a point's volume <= 0, or Newton at the smallest
 // step, §9): the histories up to there are used. Each test takes 5-50 s on one core, the
-// h = B/80 one and the phi = 20 deg one about four and five minutes.
+// h = B/80 one and the phi = 20 deg one about ten and five minutes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -63,6 +65,7 @@ std::string model(const std::string& file, int n) {
 // in the reference's units (scale x force).
 struct Push {
   std::vector<double> s, q;
+  int most_newton_iterations = 0;  // in a step of the push
   bool stopped = false;
   double at(double settlement) const {
     for (std::size_t k = 1; k < s.size(); ++k)
@@ -94,12 +97,16 @@ Push run_push(const std::string& text, const std::string& name, double scale) {
   const auto t = table.column("time", "history.csv");
   const auto u = table.column("settlement", "history.csv");
   const auto f = table.column("force", "history.csv");
+  const auto iterations = table.column("newton_iterations", "history.csv");
   double s0 = 0.0;
   for (const auto& row : table.rows) {
     if (row[t] <= 1.0 + 1e-9) s0 = -row[u];  // the settlement at the end of the first phase
     if (row[t] < 1.0 - 1e-9) continue;
     p.s.push_back(-row[u] - s0);
     p.q.push_back(scale * row[f]);
+    if (row[t] > 1.0 + 1e-9)
+      p.most_newton_iterations =
+          std::max(p.most_newton_iterations, static_cast<int>(row[iterations]));
   }
   std::printf("[%s] pushed to %.4f B, largest q %.3f\n", name.c_str(), p.s.back(), p.largest());
   return p;
@@ -118,37 +125,40 @@ TEST(FrictionalFootingValidation, SurchargeNqOverEstimateFallsWithTheMesh) {
   const double qc = coarse.at(0.01) - kCohesionShare, qm = mid.at(0.01) - kCohesionShare;
   std::printf("[N_q at 0.01 B] h = B/10: %.2f, B/20: %.2f; N_q = %.2f\n", qc, qm, kNq);
   // Low-order cells with associated (dilatant) flow over-estimate the limit load (Sloan &
-  // Randolph 1982; docs/validation.md §8-§9). Measured at 0.01 B: +15 % (B/10), +10 % (B/20).
+  // Randolph 1982; docs/validation.md §8-§9). Measured at 0.01 B: +16 % (B/10), +9 % (B/20).
   EXPECT_GT(qm, kNq);
   EXPECT_LT(qm, 1.14 * kNq);
   EXPECT_LT(qm, qc);  // the over-estimate falls with h
+  // Both run their whole push (0.03 B) with at most 10 Newton iterations a step.
+  EXPECT_FALSE(coarse.stopped);
+  EXPECT_FALSE(mid.stopped);
+  EXPECT_LE(coarse.most_newton_iterations, 10);
+  EXPECT_LE(mid.most_newton_iterations, 10);
 }
 
-TEST(FrictionalFootingValidation, SurchargeNqLevelsOffNearPrandtlReissnerOnTheFineMesh) {
+TEST(FrictionalFootingValidation, SurchargeNqNearPrandtlReissnerOnTheFineMesh) {
   const auto fine = run_push(model("frictional_footing_nq.yaml", 20), "nq_b40", kSurchargeScale);
-  const double q = fine.largest() - kCohesionShare;
-  std::printf("[N_q, h = B/40] largest %.2f (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
+  const double q = fine.at(0.01) - kCohesionShare;
+  std::printf("[N_q, h = B/40] %.2f at 0.01 B (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
               kNq);
-  // docs/validation.md §9: +5.3 % at h = B/40, where the curve levels off before the run stops.
+  // docs/validation.md §9: +4.7 % at 0.01 B on h = B/40 (the run stops at 0.024 B, Newton at
+  // the smallest step in the heave beside the footing).
   EXPECT_GT(q, kNq);
   EXPECT_LT(q, 1.08 * kNq);
-  // Levelled off: the last 0.001 B of the push adds less than 1 %.
-  EXPECT_LT(fine.q.back() - fine.at(fine.s.back() - 0.001), 0.01 * fine.q.back());
+  EXPECT_LE(fine.most_newton_iterations, 10);
 }
 
 TEST(FrictionalFootingValidation, SurchargeNqWithinFivePercentOfPrandtlReissnerAtBOver80) {
-  // The finest mesh of docs/validation.md §9 (h = B/80, 40 cells under the half-width; about 4
-  // minutes on one core): the load passes a maximum 2.1 % above N_q = 18.40 before the run stops
-  // at 0.009 B (a point's volume <= 0). The target, as for the Tresca strip: within +5 %.
+  // The finest mesh of docs/validation.md §9 (h = B/80, 40 cells under the half-width; about 10
+  // minutes on one core): 2.7 % above N_q = 18.40 at 0.01 B; the run stops at 0.011 B (Newton at
+  // the smallest step). The target, as for the Tresca strip: within +5 %.
   const auto finest = run_push(model("frictional_footing_nq.yaml", 40), "nq_b80", kSurchargeScale);
-  const double q = finest.largest() - kCohesionShare;
-  std::printf("[N_q, h = B/80] largest %.2f (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
+  const double q = finest.at(0.01) - kCohesionShare;
+  std::printf("[N_q, h = B/80] %.2f at 0.01 B (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
               kNq);
   EXPECT_GT(q, kNq);  // an upper bound: associated flow on low-order cells
   EXPECT_LT(q, 1.05 * kNq);
-  // At its limit load: over the last 0.0005 B of the push the load moves by less than 1 %.
-  EXPECT_LT(std::abs(finest.q.back() - finest.at(finest.s.back() - 0.0005)),
-            0.01 * finest.q.back());
+  EXPECT_LE(finest.most_newton_iterations, 10);
 }
 
 TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPrandtlReissner) {
@@ -156,7 +166,10 @@ TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPr
   // instead of 5000 q0) and pushed 0.0015 B forms its mechanism before the second row of points
   // under the footing crosses its cell (docs/validation.md §9, N_q in the rigid-plastic limit).
   // Measured at 0.0015 B on h = B/10, B/20, B/40: 24.26, 21.47, 20.02 (+32, +17, +9 %), order 0.94,
-  // Richardson extrapolation 18.42.
+  // Richardson extrapolation 18.42. With standard MPM (nothing crosses a cell, so the example's
+  // GIMP, for the heave above the surface, is not needed) and up to 20 Newton iterations a step:
+  // the stiff soil's steps need 13-14 on h = B/40 (with 10 they stop, the residual converged but
+  // not the corrections).
   std::vector<double> q;
   for (int n : {5, 10, 20}) {
     auto text = testing::replace_once(
@@ -164,6 +177,9 @@ TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPr
             testing::example_text("frictional_footing/frictional_footing_nq.yaml"),
             "vtk: {every: 10}", "vtk: {every: 0}"),
         "E: 5000,", "E: 100000,");
+    text = testing::replace_once(testing::replace_once(text, "interpolation: gimp, ", ""),
+                                 "line_search: 6, max_iterations: 10,",
+                                 "line_search: 6, max_iterations: 20,");
     text = testing::strip_mesh(testing::replace_once(text, "\"-0.01*t\"", "\"-0.0015*t\""), n);
     const auto push = run_push(text, "nq_stiff_" + std::to_string(n), kSurchargeScale);
     ASSERT_FALSE(push.stopped) << "h = B/" << 2 * n;
