@@ -2517,7 +2517,7 @@ def section_frictional(args, work):
       "(`interpolation: gimp`, docs/theory.md §9): the dilating soil heaves beside the footing and "
       "its top row of points enters the empty cells above the surface near 0.015 B, where with "
       "standard MPM Newton stalls at every step size (measured on h = B/20: the same settings with "
-      "standard MPM stop at 0.015 B, and at 0.008 B on h = B/80). The N_γ runs use standard MPM and "
+      "standard MPM stop at 0.014 B, and at 0.008 B on h = B/80). The N_γ runs use standard MPM and "
       "start each step from the last one extrapolated (`predictor: extrapolated`, docs/theory.md "
       "§4.5); a step whose extrapolated start fails (after half of `max_iterations`, 10 here, or "
       "later if it was converging superlinearly then) is solved again from zero, and the table's "
@@ -2547,7 +2547,10 @@ def section_frictional(args, work):
       "of the cone (zero stress and zero stiffness). In trial runs with softer soil (E = 1000 q0 and "
       "500 γB, h = B/20) the c = 0 runs stopped earlier, Newton failing at the smallest step (N_q at "
       "0.046 B still rising, rough N_γ at 0.026 B), where c = 0.01 went on (N_q to its plateau, N_γ to "
-      "0.044 B). With the stiffer soil of the table the N_q curve with c = 0 is the same (row c = 0).")
+      "0.044 B). With the stiffer soil of the table the N_q curve with c = 0 is the same (row c = 0) up to "
+      "where it stops, 0.009 B: that run keeps the elastic side's tangent on the surface, since "
+      "stress-free c = 0 soil sits at the apex, whose plastic side's tangent is zero, and with the "
+      "example's `surface_tangent: plastic` its first step fails.")
     w("")
 
     # N_q table
@@ -2594,7 +2597,7 @@ def section_frictional(args, work):
                                      ("nq_n40", "B/80")) if k in nq_best]
     nq_at = {k: q_at_push(runs[k], SQ, NQ_READ) - corr for k, _ in nq_mesh}
     fine = nq_at[nq_mesh[-1][0]] if nq_mesh else float("nan")
-    newton_max = max(push_iterations(runs[k])[0] for k, _ in nq_mesh) if nq_mesh else 99
+    newton_max = max(push_iterations(runs[k])[0] for k, _ in nq_mesh) if nq_mesh else None
     order = richardson([nq_at[k] for k, _ in nq_mesh[-3:]]) if len(nq_mesh) >= 3 else None
     w(f"**N_q: {verdict(0 <= fine / NQ_30 - 1 <= 0.05).capitalize()}** (target: within +5 % of N_q, as "
       f"for the Tresca strip, at {NQ_READ:g} B: the load does not level off, as on the c–φ strip of §8 the "
@@ -2604,8 +2607,8 @@ def section_frictional(args, work):
           f"{hh} {(nq_at[k] / NQ_30 - 1) * 100:+.1f} %" for k, hh in nq_mesh)
       + (f"; observed order {order[0]:.2f}, Richardson extrapolation h → 0 {order[1]:.2f} "
          f"({(order[1] / NQ_30 - 1) * 100:+.1f} % from N_q)" if order else "")
-      + f". **Newton ≤ 10: {verdict(newton_max <= 10)}** (at most {newton_max} iterations in a step "
-      "of these runs).")
+      + (f". **Newton ≤ 10: {verdict(newton_max <= 10)}** (at most {newton_max} iterations in a step "
+         "of these runs)." if newton_max is not None else "."))
     w("")
     lines += nq_rigid_plastic_limit(runner, corr)
 
