@@ -112,16 +112,17 @@ double MohrCoulomb::strain_energy(const Mat3& eps) const {
   return 0.5 * lambda_ * tr * tr + mu_ * eps.squaredNorm();
 }
 
-PrincipalReturn MohrCoulomb::principal_return(const Vec3& trial_principal_strain) const {
+PrincipalReturn MohrCoulomb::principal_return(const Vec3& trial_principal_strain,
+                                              const InternalVariables& internal) const {
   return return_to_yield_planes(trial_principal_strain, principal_elasticity_, planes_, faces_,
-                                p_.surface_tangent);
+                                surface_side(p_.surface_tangent, internal[plastic_strain_index]));
 }
 
 void MohrCoulomb::update(const Mat3& eps, const InternalVariables& internal_n,
                          StressUpdate& out) const {
   out.internal = internal_n;
   const SymmetricEigen trial = principal_descending(eps);
-  const PrincipalReturn r = principal_return(trial.values);
+  const PrincipalReturn r = principal_return(trial.values, internal_n);
   if (r.active == 0) {
     // Elastic (docs/theory.md §3.3): the trial state, with its tangent in closed form.
     out.kirchhoff = lambda_ * eps.trace() * Mat3::Identity() + 2.0 * mu_ * eps;

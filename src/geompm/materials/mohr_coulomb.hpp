@@ -67,8 +67,10 @@ class MohrCoulomb final : public Material {
   std::optional<double> default_k0() const override;
 
   /// The return in principal space for trial strains sorted eps_1 >= eps_2 >= eps_3: the core of
-  /// update(), public so that tests can see the region.
-  PrincipalReturn principal_return(const Vec3& trial_principal_strain) const;
+  /// update(), public so that tests can see the region. `internal`: the point's state at the
+  /// start of the step (which side's tangent a state on the surface reports, §1.7).
+  PrincipalReturn principal_return(const Vec3& trial_principal_strain,
+                                   const InternalVariables& internal) const;
 
   /// The hydrostatic stress of the apex, c / tan(phi) (infinite for phi = 0).
   double apex() const;

@@ -55,6 +55,15 @@ std::vector<unsigned> active_sets_up_to_three(int plane_count);
 /// surface (docs/materials.md §1.7).
 enum class SurfaceTangent { elastic, plastic };
 
+/// The side a point reports on the surface: `chosen` (the model's `surface_tangent`), except that
+/// a point that has never yielded (equivalent plastic strain zero) reports the elastic side's
+/// (docs/materials.md §1.7): the plastic side is meant for the last steps' plastic zone, and at
+/// a stress-free point of cohesionless soil - at the apex, where every plane is at the surface -
+/// it would report a zero tangent.
+inline SurfaceTangent surface_side(SurfaceTangent chosen, double equivalent_plastic_strain) {
+  return equivalent_plastic_strain > 0.0 ? chosen : SurfaceTangent::elastic;
+}
+
 /// The return to the yield planes (at most max_yield_planes) of principal trial strains sorted
 /// eps_1 >= eps_2 >= eps_3.
 /// Elastic when no plane is violated; otherwise the first set of `candidates` whose return

@@ -115,7 +115,7 @@ PrincipalReturn Tresca::principal_return(const Vec3& trial_principal_strain,
       principal_elasticity(lame_lambda(E, p_.poisson_ratio), shear_modulus(E, p_.poisson_ratio));
   const auto planes = tresca_planes(su);
   return return_to_yield_planes(trial_principal_strain, de, planes, tresca_faces,
-                                p_.surface_tangent);
+                                surface_side(p_.surface_tangent, internal[plastic_strain_index]));
 }
 
 void Tresca::update(const Mat3& eps, const InternalVariables& internal_n, StressUpdate& out) const {

@@ -28,6 +28,12 @@ MohrCoulomb make_soil(double phi, double psi, double cutoff = -1,
 }
 
 const Mat3 de = principal_elasticity(lame_lambda(E, nu), shear_modulus(E, nu));
+// The state of a point that has yielded in an earlier step (docs/materials.md §1.7).
+const InternalVariables yielded = [] {
+  InternalVariables v{};
+  v[MohrCoulomb::plastic_strain_index] = 1e-3;
+  return v;
+}();
 const Tensor4 elastic = isotropic_elasticity4(lame_lambda(E, nu), shear_modulus(E, nu));
 
 // Geometry of the surface of `soil` in the sextant tau_1 >= tau_2 >= tau_3.
@@ -140,7 +146,8 @@ TEST(MohrCoulomb, ReturnsToTheFaceTheTrialStateWasBuiltFrom) {
     for (Face face : cs.faces)
       for (int sample = 0; sample < 40; ++sample) {
         const FacePoint f = random_face_point(face, s, rng);
-        const PrincipalReturn r = soil.principal_return(sorted_descending(trial_for(soil, f, rng)));
+        const PrincipalReturn r =
+            soil.principal_return(sorted_descending(trial_for(soil, f, rng)), {});
         SCOPED_TRACE(::testing::Message() << "phi " << cs.phi << " psi " << cs.psi << " cutoff "
                                           << cs.cutoff << " face " << static_cast<int>(face));
         if (f.expected != 0) {
@@ -169,7 +176,7 @@ TEST(MohrCoulomb, EdgeAgreesWithTheClosedFormCriterion) {
     const Vec3 stress = Vec3::Constant(-150) + 120 * Vec3(u(rng), u(rng), u(rng));
     const Vec3 eps = sorted_descending(de.inverse() * stress);
     const Vec3 trial = de * eps;
-    const PrincipalReturn r = soil.principal_return(eps);
+    const PrincipalReturn r = soil.principal_return(eps, {});
     const PrincipalReturn plane = return_to_yield_planes(eps, de, std::span(soil.planes()).first(1),
                                                          std::vector<unsigned>{0b1});
     if (r.active == 0 ||
@@ -197,7 +204,7 @@ TEST(MohrCoulomb, KuhnTuckerConditionsHoldForAnyTrialState) {
       const Vec3 stress = Vec3::Constant(-40 * (1 + u(rng))) + 60 * Vec3(u(rng), u(rng), u(rng));
       const Vec3 eps = sorted_descending(de.inverse() * stress);
       const Vec3 trial = de * eps;
-      const PrincipalReturn r = soil.principal_return(eps);
+      const PrincipalReturn r = soil.principal_return(eps, {});
       const double tol = 1e-9 * stress_scale(trial);
       for (const YieldPlane& p : planes) EXPECT_LE(p.normal.dot(r.stress) - p.limit, tol);
       EXPECT_GE(r.stress(0), r.stress(1) - tol);
@@ -243,7 +250,7 @@ TEST(MohrCoulomb, TangentMatchesFiniteDifferencesInEveryRegion) {
           returned = f.stress;
           expected = f.expected;
         }
-        const PrincipalReturn r = soil.principal_return(sorted_descending(principal));
+        const PrincipalReturn r = soil.principal_return(sorted_descending(principal), {});
         SCOPED_TRACE(::testing::Message()
                      << "phi " << cs.phi << " psi " << cs.psi << " cutoff " << cs.cutoff
                      << " region " << (region ? static_cast<int>(*region) : -1));
@@ -277,9 +284,9 @@ TEST(MohrCoulomb, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
                                           << cs.cutoff << " face " << static_cast<int>(face));
         const FacePoint f = random_face_point(face, s, rng);
         const PrincipalReturn on =
-            soil.principal_return(sorted_descending(de.inverse() * f.stress));
+            soil.principal_return(sorted_descending(de.inverse() * f.stress), yielded);
         const PrincipalReturn beyond =
-            soil.principal_return(sorted_descending(trial_for(soil, f, rng)));
+            soil.principal_return(sorted_descending(trial_for(soil, f, rng)), yielded);
         EXPECT_NE(on.active, 0u);
         EXPECT_LT((on.stress - f.stress).norm(), 1e-10 * stress_scale(f.stress));
         EXPECT_EQ(on.plastic_strain, Vec3::Zero());
@@ -288,16 +295,34 @@ TEST(MohrCoulomb, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
         // The whole update: the trial stress, with a tangent that is not the elastic one.
         StressUpdate out;
         const Mat3 eps = with_axes(de.inverse() * f.stress, random_rotation(rng));
-        soil.update(eps, {}, out);
+        soil.update(eps, yielded, out);
         EXPECT_LT((out.kirchhoff - (lame_lambda(E, nu) * eps.trace() * Mat3::Identity() +
                                     2 * shear_modulus(E, nu) * eps))
                       .norm(),
                   1e-10 * stress_scale(f.stress));
         EXPECT_GT((out.tangent - elastic).norm(), 1e-2 * elastic.norm());
-        by_default.update(eps, {}, out);
+        by_default.update(eps, yielded, out);
+        EXPECT_EQ(out.tangent, elastic);
+        // A point that has never yielded reports the elastic side's tangent (§1.7).
+        soil.update(eps, {}, out);
         EXPECT_EQ(out.tangent, elastic);
       }
   }
+}
+
+// Stress-free cohesionless soil sits at the apex of the cone, where every plane is at the surface
+// and the plastic side's tangent is zero: with `surface_tangent: plastic` a point that has never
+// yielded reports the elastic side's (docs/materials.md §1.7), so that the first step of a phase
+// that loads such soil from rest has a regular tangent; once yielded at the apex, the zero one.
+TEST(MohrCoulomb, StressFreeCohesionlessSoilKeepsTheElasticTangentUntilItYields) {
+  const MohrCoulomb sand = make_mohr_coulomb(0.0, 30, 30, E, nu, -1, SurfaceTangent::plastic);
+  StressUpdate out;
+  sand.update(Mat3::Zero(), {}, out);
+  EXPECT_EQ(out.kirchhoff, Mat3::Zero());
+  EXPECT_EQ(out.tangent, elastic);
+  sand.update(Mat3::Zero(), yielded, out);
+  EXPECT_EQ(out.kirchhoff, Mat3::Zero());
+  EXPECT_LT(out.tangent.norm(), 1e-12 * elastic.norm());
 }
 
 TEST(MohrCoulomb, ApexIsAFixedHydrostaticStressWithZeroTangent) {

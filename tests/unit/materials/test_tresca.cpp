@@ -82,7 +82,9 @@ TEST(Tresca, ReturnsToTheFaceTheTrialStateWasBuiltFrom) {
 // elastic one (docs/materials.md §1.7).
 TEST(Tresca, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
   const Tresca clay = make_clay(SurfaceTangent::plastic), by_default = make_clay();
-  const InternalVariables internal = seeded(clay);
+  InternalVariables internal = seeded(clay);
+  const InternalVariables never_yielded = internal;
+  internal[Tresca::plastic_strain_index] = 1e-3;  // yielded in an earlier step (§1.7)
   const Mat3 de = elasticity(internal[Tresca::modulus_index]);
   std::mt19937 rng(12);
   for (unsigned mask : {Tresca::main_plane, Tresca::right_edge, Tresca::left_edge})
@@ -99,6 +101,10 @@ TEST(Tresca, OnTheSurfaceTheTangentIsThePlasticSidesWhenAskedFor) {
       const PrincipalReturn elastic = by_default.principal_return(on, internal);
       EXPECT_EQ(elastic.active, 0u);
       EXPECT_EQ(elastic.tangent, de);
+      // A point that has never yielded reports the elastic side's tangent.
+      const PrincipalReturn virgin = clay.principal_return(on, never_yielded);
+      EXPECT_EQ(virgin.active, 0u);
+      EXPECT_EQ(virgin.tangent, de);
     }
 }
 
