@@ -2545,7 +2545,8 @@ def section_frictional(args, work):
       "500 γB, h = B/20) the c = 0 runs stopped earlier, Newton failing at the smallest step (N_q at "
       "0.046 B still rising, rough N_γ at 0.026 B), where c = 0.01 went on (N_q to its plateau, N_γ to "
       "0.044 B). With the stiffer soil of the table and the example's settings the N_q curve with c = 0 is "
-      "the same (row c = 0) up to where it stops, 0.009 B. Stress-free c = 0 soil sits at the apex, "
+      f"the same (row c = 0) up to where it stops ({push_end(runs['nq_c0'], SQ)}). Stress-free c = 0 "
+      "soil sits at the apex, "
       "whose plastic side's tangent is zero; `surface_tangent: plastic` reports it only at points that "
       "have yielded before (docs/materials.md §1.7), so the first step, which loads that soil from rest, "
       "has the elastic tangent.")
