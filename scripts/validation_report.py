@@ -2540,12 +2540,15 @@ def section_frictional(args, work):
       f"could not consult). c = {C_TINY} kPa "
       f"adds about c N_c = {C_TINY * NC_30:.1f} kPa to q (0.03 to N_γ), not subtracted.")
     w("")
+    c0 = runs["nq_c0"]
+    c0_end = (push_end(c0, SQ) if c0.h is not None and len(push_curve(c0, SQ)[0]) > 0
+              else f"it did not reach the push: {c0.summary[:120]}")
     w("Why the tiny cohesion: with c = 0 points at the free surface beside the footing sit at the apex "
       "of the cone (zero stress and zero stiffness). In trial runs with softer soil (E = 1000 q0 and "
       "500 γB, h = B/20) the c = 0 runs stopped earlier, Newton failing at the smallest step (N_q at "
       "0.046 B still rising, rough N_γ at 0.026 B), where c = 0.01 went on (N_q to its plateau, N_γ to "
       "0.044 B). With the stiffer soil of the table and the example's settings the N_q curve with c = 0 is "
-      f"the same (row c = 0) up to where it stops ({push_end(runs['nq_c0'], SQ)}). Stress-free c = 0 "
+      f"the same (row c = 0) up to where it stops ({c0_end}). Stress-free c = 0 "
       "soil sits at the apex, "
       "whose plastic side's tangent is zero; `surface_tangent: plastic` reports it only at points that "
       "have yielded before (docs/materials.md §1.7), so the first step, which loads that soil from rest, "
