@@ -48,7 +48,7 @@ std::vector<AxisSegment> read_axis(const yaml::Node& node) {
 }
 
 StructuredMeshSpec read_generated_mesh(const yaml::Node& node, Context& context) {
-  const yaml::Map generate = node.map({"cell", "origin", "x", "y", "z"});
+  const yaml::Map generate = node.map({"cell", "diagonals", "origin", "x", "y", "z"});
   const int dim = context.dimension;
   StructuredMeshSpec mesh;
   mesh.cell_type = dim == 3 ? CellType::Hex8 : CellType::Quad4;
@@ -59,6 +59,16 @@ StructuredMeshSpec read_generated_mesh(const yaml::Node& node, Context& context)
       cell->fail(fmt::format("'{}' cells are {}D but the kinematics '{}' is {}D; use {}", name,
                              cell_dimension(mesh.cell_type), to_string(context.kinematics), dim,
                              dim == 3 ? "tet4 or hex8" : "tri3, tri6 or quad4"));
+  }
+  if (auto diagonals = generate.find("diagonals")) {
+    if (diagonals->choice({"alternating", "crossed"}) == "crossed") {
+      if (mesh.cell_type != CellType::Tri3)
+        diagonals->fail(fmt::format(
+            "crossed diagonals split each rectangle into four tri3 cells, but the cell is '{}'; "
+            "set 'cell: tri3' or remove 'diagonals'",
+            to_string(mesh.cell_type)));
+      mesh.diagonals = Diagonals::Crossed;
+    }
   }
   if (auto origin = generate.find("origin")) {
     mesh.origin = origin->vector(dim);

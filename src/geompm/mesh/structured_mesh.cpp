@@ -111,6 +111,14 @@ Mesh generate_2d(const StructuredMeshSpec& spec) {
                     n3 = grid.id(i, j + 1);
         if (spec.cell_type == CellType::Quad4) {
           add_cell(mesh, {n0, n1, n2, n3});
+        } else if (spec.diagonals == Diagonals::Crossed) {  // four triangles around the centre
+          const Index centre = static_cast<Index>(mesh.nodes.size());
+          mesh.nodes.push_back(0.25 *
+                               (mesh.nodes[n0] + mesh.nodes[n1] + mesh.nodes[n2] + mesh.nodes[n3]));
+          add_cell(mesh, {n0, n1, centre});
+          add_cell(mesh, {n1, n2, centre});
+          add_cell(mesh, {n2, n3, centre});
+          add_cell(mesh, {n3, n0, centre});
         } else if ((i + j) % 2 == 0) {  // alternating diagonals avoid a directional bias
           add_cell(mesh, {n0, n1, n2});
           add_cell(mesh, {n0, n2, n3});
@@ -197,6 +205,11 @@ Mesh generate_structured_mesh(const StructuredMeshSpec& spec) {
   const char* names[3] = {"x", "y", "z"};
   for (int i = 0; i < dim; ++i)
     check_segments(spec.axes[i], std::string("structured mesh, axis ") + names[i]);
+  if (spec.diagonals == Diagonals::Crossed && spec.cell_type != CellType::Tri3)
+    throw std::invalid_argument(
+        std::string("structured mesh: crossed diagonals split rectangles into tri3 cells; the "
+                    "cell type is ") +
+        to_string(spec.cell_type));
   return dim == 2 ? generate_2d(spec) : generate_3d(spec);
 }
 

@@ -19,8 +19,18 @@ struct AxisSegment {
   double ratio = 1.0;  // size of the last cell / size of the first cell in this segment
 };
 
+/// How a rectangle of a generated Tri3 mesh is split: in two triangles by one diagonal, the
+/// diagonal alternating from rectangle to rectangle, or in four by both diagonals around a node
+/// at its centre (the "crossed" or union-jack pattern). Both leave the linear triangles free of
+/// volumetric locking (Nagtegaal, Parks & Rice 1974: of a union jack's constant-volume
+/// constraints one is implied by the others; alternating diagonals make one of every 2 x 2
+/// rectangles, crossed ones of every rectangle), so the displacement formulation carries nearly
+/// incompressible and dilating plastic flow (docs/theory.md §15).
+enum class Diagonals { Alternating, Crossed };
+
 struct StructuredMeshSpec {
   CellType cell_type = CellType::Quad4;
+  Diagonals diagonals = Diagonals::Alternating;  // Tri3 only
   Vec3 origin = Vec3::Zero();
   std::array<std::vector<AxisSegment>, 3> axes;  // x, y (, z): only the first dim are used
 };
@@ -28,8 +38,10 @@ struct StructuredMeshSpec {
 /// Node coordinates along one axis, from `origin` (size = total cells + 1).
 std::vector<double> axis_coordinates(double origin, const std::vector<AxisSegment>& segments);
 
-/// Tri3/Tri6: each rectangle split in two triangles (alternating diagonals); Tet4: each hexahedron
-/// split in six tetrahedra (conforming). Throws std::invalid_argument on bad sizes.
+/// Tri3/Tri6: each rectangle split in two triangles (alternating diagonals), or Tri3 in four
+/// (crossed diagonals, a node at each rectangle's centre, numbered after the grid's nodes); Tet4:
+/// each hexahedron split in six tetrahedra (conforming). Throws std::invalid_argument on bad
+/// sizes, and on crossed diagonals for another cell type.
 Mesh generate_structured_mesh(const StructuredMeshSpec& spec);
 
 }  // namespace geompm

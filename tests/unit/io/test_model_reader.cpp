@@ -383,10 +383,23 @@ phases: [{name: geostatic, time_step: 1, gravity: {acceleration: [0, -9.81]}}]
                                                "cpt.yaml");
   EXPECT_EQ(m.kinematics, Kinematics::Axisymmetric);
   EXPECT_EQ(m.mesh.generate->cell_type, CellType::Tri3);
+  EXPECT_EQ(m.mesh.generate->diagonals, Diagonals::Alternating);
   EXPECT_EQ(m.bodies[0].region.kind, spec::Region::Kind::Group);
   EXPECT_EQ(m.bodies[0].region.group, "all");
   EXPECT_EQ(m.bodies[0].points_per_cell, 3);
   EXPECT_EQ(m.phases[0].gravity->acceleration, Vec3(0, -9.81, 0));
+}
+
+TEST(ModelReader, Tri3MeshesCanCrossTheirDiagonals) {
+  const spec::Model m = read_model_from_string(R"m(
+analysis: {kinematics: plane_strain}
+mesh: {generate: {cell: tri3, diagonals: crossed, x: {length: 2, cells: 2}, y: {length: 1, cells: 1}}}
+materials: {soil: {model: hencky, E: 1000, nu: 0.3, density: 0}}
+bodies: {soil: {material: soil, region: all, points_per_cell: 3}}
+phases: [{name: rest, time_step: 1}]
+)m",
+                                               "crossed.yaml");
+  EXPECT_EQ(m.mesh.generate->diagonals, Diagonals::Crossed);
 }
 
 TEST(ModelReader, PhasesShareSettingsThroughYamlMergeKeys) {

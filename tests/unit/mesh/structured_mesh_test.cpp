@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -81,6 +83,20 @@ StructuredMeshSpec graded_spec(CellType type) {
   return spec;
 }
 
+/// The graded meshes of every cell type, and Tri3 with crossed diagonals.
+std::vector<StructuredMeshSpec> every_graded_spec() {
+  std::vector<StructuredMeshSpec> specs;
+  for (CellType type : all_cell_types) specs.push_back(graded_spec(type));
+  specs.push_back(graded_spec(CellType::Tri3));
+  specs.back().diagonals = Diagonals::Crossed;
+  return specs;
+}
+
+std::string describe(const StructuredMeshSpec& spec) {
+  return std::string(to_string(spec.cell_type)) +
+         (spec.diagonals == Diagonals::Crossed ? " (crossed)" : "");
+}
+
 TEST(StructuredMeshTest, CountsOfNodesAndCells) {
   const std::map<CellType, std::array<Index, 2>> expected = {
       {CellType::Quad4, {6 * 5, 5 * 4}},
@@ -94,26 +110,32 @@ TEST(StructuredMeshTest, CountsOfNodesAndCells) {
     EXPECT_EQ(mesh.num_nodes(), counts[0]) << to_string(type);
     EXPECT_EQ(mesh.num_cells(), counts[1]) << to_string(type);
   }
+  // Crossed diagonals: a node at each rectangle's centre, four triangles around it.
+  StructuredMeshSpec crossed = graded_spec(CellType::Tri3);
+  crossed.diagonals = Diagonals::Crossed;
+  const Mesh mesh = generate_structured_mesh(crossed);
+  EXPECT_EQ(mesh.num_nodes(), 6 * 5 + 5 * 4);
+  EXPECT_EQ(mesh.num_cells(), 4 * 5 * 4);
 }
 
 TEST(StructuredMeshTest, CellsArePositivelyOrientedAndEveryNodeIsUsed) {
-  for (CellType type : all_cell_types) {
-    const Mesh mesh = generate_structured_mesh(graded_spec(type));
-    EXPECT_NO_THROW(validate_mesh(mesh, "generated")) << to_string(type);
+  for (const StructuredMeshSpec& spec : every_graded_spec()) {
+    const Mesh mesh = generate_structured_mesh(spec);
+    EXPECT_NO_THROW(validate_mesh(mesh, "generated")) << describe(spec);
     for (Index c = 0; c < mesh.num_cells(); ++c)
-      EXPECT_GT(cell_min_relative_jacobian(mesh, c), 0.0) << to_string(type) << " " << c;
+      EXPECT_GT(cell_min_relative_jacobian(mesh, c), 0.0) << describe(spec) << " " << c;
     std::vector<char> used(mesh.nodes.size(), 0);
     for (Index n : mesh.connectivity) used[n] = 1;
-    EXPECT_EQ(std::count(used.begin(), used.end(), 1), mesh.num_nodes()) << to_string(type);
+    EXPECT_EQ(std::count(used.begin(), used.end(), 1), mesh.num_nodes()) << describe(spec);
   }
 }
 
 TEST(StructuredMeshTest, NoTwoNodesCoincide) {
-  for (CellType type : all_cell_types) {
-    const Mesh mesh = generate_structured_mesh(graded_spec(type));
+  for (const StructuredMeshSpec& spec : every_graded_spec()) {
+    const Mesh mesh = generate_structured_mesh(spec);
     std::set<std::array<double, 3>> distinct;
     for (const Vec3& x : mesh.nodes) distinct.insert({x[0], x[1], x[2]});
-    EXPECT_EQ(distinct.size(), mesh.nodes.size()) << to_string(type);
+    EXPECT_EQ(distinct.size(), mesh.nodes.size()) << describe(spec);
   }
 }
 
@@ -148,11 +170,11 @@ std::map<std::vector<Index>, int> count_faces(const Mesh& mesh) {
 
 TEST(StructuredMeshTest, MeshesAreConforming) {
   // Every face is shared by two cells, or lies on the boundary of the box.
-  for (CellType type : all_cell_types) {
-    const Mesh mesh = generate_structured_mesh(graded_spec(type));
-    const Vec3 lower = graded_spec(type).origin, upper = lower + Vec3(3.0, 1.5, 1.0);
+  for (const StructuredMeshSpec& spec : every_graded_spec()) {
+    const Mesh mesh = generate_structured_mesh(spec);
+    const Vec3 lower = spec.origin, upper = lower + Vec3(3.0, 1.5, 1.0);
     for (const auto& [face, cells] : count_faces(mesh)) {
-      ASSERT_LE(cells, 2) << to_string(type);
+      ASSERT_LE(cells, 2) << describe(spec);
       if (cells == 2) continue;
       bool on_boundary = false;
       for (int i = 0; i < mesh.dim(); ++i) {
@@ -163,7 +185,7 @@ TEST(StructuredMeshTest, MeshesAreConforming) {
         }
         on_boundary |= all_at_lower || all_at_upper;
       }
-      EXPECT_TRUE(on_boundary) << to_string(type) << ": a hanging face inside the mesh";
+      EXPECT_TRUE(on_boundary) << describe(spec) << ": a hanging face inside the mesh";
     }
   }
 }
@@ -194,9 +216,89 @@ TEST(StructuredMeshTest, TrianglesAlternateTheirDiagonals) {
   EXPECT_EQ(faces.count({1, 3}), 0u);
 }
 
+TEST(StructuredMeshTest, CrossedDiagonalsMeetAtEachRectanglesCentre) {
+  StructuredMeshSpec spec = graded_spec(CellType::Tri3);
+  spec.diagonals = Diagonals::Crossed;
+  const Mesh mesh = generate_structured_mesh(spec);
+  const Mesh corners = generate_structured_mesh(graded_spec(CellType::Quad4));
+  ASSERT_EQ(mesh.num_cells(), 4 * corners.num_cells());
+  for (Index r = 0; r < corners.num_cells(); ++r) {
+    Vec3 centre = Vec3::Zero();
+    for (Index n : corners.cell_nodes(r)) centre += 0.25 * corners.nodes[n];
+    double area = 0.0;
+    for (Index t = 4 * r; t < 4 * r + 4; ++t) {
+      const auto nodes = mesh.cell_nodes(t);
+      EXPECT_LT((mesh.nodes[nodes[2]] - centre).norm(), 1e-14);  // the shared centre node
+      const Vec3 a = mesh.nodes[nodes[1]] - mesh.nodes[nodes[0]];
+      const Vec3 b = mesh.nodes[nodes[2]] - mesh.nodes[nodes[0]];
+      area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+    const Vec3 d =
+        corners.nodes[corners.cell_nodes(r)[2]] - corners.nodes[corners.cell_nodes(r)[0]];
+    EXPECT_NEAR(area, d.x() * d.y(), 1e-13);  // the four tile their rectangle
+  }
+}
+
+/// The dimension of the space of nodal velocities, zero on the boundary, under which every cell
+/// keeps its volume: the velocities the constant-strain triangles leave to an incompressible
+/// (or, plastically, a constantly dilating) flow. Zero means the mesh locks.
+Index incompressible_velocity_fields(const Mesh& mesh) {
+  const std::vector<char> fixed = testing::boundary_nodes(mesh);
+  std::vector<Index> unknown(mesh.nodes.size(), -1);
+  Index count = 0;
+  for (Index n = 0; n < mesh.num_nodes(); ++n)
+    if (!fixed[n]) unknown[n] = count++;
+  Eigen::MatrixXd divergence = Eigen::MatrixXd::Zero(mesh.num_cells(), 2 * count);
+  using E = Element<CellType::Tri3>;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    Eigen::Matrix<double, 3, 2> X;
+    for (int a = 0; a < 3; ++a) X.row(a) = mesh.nodes[mesh.cell_nodes(c)[a]].head<2>().transpose();
+    const E::Gradients dN = E::shape_gradients(E::centroid());
+    const Eigen::Matrix<double, 3, 2> grad = dN * (X.transpose() * dN).inverse();
+    for (int a = 0; a < 3; ++a)
+      if (const Index u = unknown[mesh.cell_nodes(c)[a]]; u >= 0) {
+        divergence(c, 2 * u) = grad(a, 0);
+        divergence(c, 2 * u + 1) = grad(a, 1);
+      }
+  }
+  return 2 * count - Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(divergence).rank();
+}
+
+TEST(StructuredMeshTest, TrianglesLeaveIncompressibleFlowFree) {
+  // Nagtegaal, Parks & Rice (1974): a mesh locks when its cells' constant-volume constraints
+  // leave no velocity field but rest. On an N x N grid with the boundary held, constant-strain
+  // triangles with one diagonal per rectangle have 2N^2 constraints on 2(N-1)^2 velocities, but
+  // the generated diagonals alternate, so every 2 x 2 block of rectangles is a union jack of
+  // eight triangles around its centre node, and at such a node the constraints are dependent.
+  // Crossed diagonals make every rectangle a union jack of four, whose constraints satisfy
+  // one relation (the alternating sum of the four volume changes vanishes). The counts are
+  // measured: (N - 2)^2 incompressible flows crossed, 2 (N/2 - 1)(N/2 - 2) alternating; both grow
+  // like the number of cells, so neither pattern locks (docs/theory.md §15). With the centre node
+  // off the diagonals' crossing a rectangle's four constraints are independent.
+  for (int n : {4, 6, 8}) {
+    StructuredMeshSpec spec;
+    spec.cell_type = CellType::Tri3;
+    spec.axes[0] = {{2.0, n, 1.0}};
+    spec.axes[1] = {{1.0, n, 1.0}};
+    const Mesh alternating = generate_structured_mesh(spec);
+    spec.diagonals = Diagonals::Crossed;
+    const Mesh crossed = generate_structured_mesh(spec);
+    EXPECT_EQ(incompressible_velocity_fields(alternating), 2 * (n / 2 - 1) * (n / 2 - 2)) << n;
+    EXPECT_EQ(incompressible_velocity_fields(crossed), (n - 2) * (n - 2)) << n;
+  }
+}
+
+TEST(StructuredMeshTest, CrossedDiagonalsNeedTri3Cells) {
+  for (CellType type : {CellType::Tri6, CellType::Quad4, CellType::Tet4, CellType::Hex8}) {
+    StructuredMeshSpec spec = graded_spec(type);
+    spec.diagonals = Diagonals::Crossed;
+    EXPECT_THROW(generate_structured_mesh(spec), std::invalid_argument) << to_string(type);
+  }
+}
+
 TEST(StructuredMeshTest, BoundaryGroupsHoldExactlyTheNodesOnEachSide) {
-  for (CellType type : all_cell_types) {
-    const StructuredMeshSpec spec = graded_spec(type);
+  for (const StructuredMeshSpec& spec : every_graded_spec()) {
+    const CellType type = spec.cell_type;
     const Mesh mesh = generate_structured_mesh(spec);
     const Vec3 lower = spec.origin, upper = lower + Vec3(3.0, 1.5, 1.0);
     const bool three_d = mesh.dim() == 3;
