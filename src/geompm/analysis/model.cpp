@@ -200,9 +200,9 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                          body.name, spec.bodies[other].name, s.position.x(),
                                          s.position.y(), s.position.z()));
         const Index material = body_material_at(spec, body, s.position(dim - 1));
-        const Index p =
-            model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                              model->materials[material]->density(), c, s.xi, s.half_size);
+        const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
+                                          model->materials[material]->density(), c, s.xi,
+                                          s.half_size, s.top_offset);
         // Point-dependent state, e.g. a strength growing with depth.
         try {
           model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);

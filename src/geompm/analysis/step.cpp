@@ -238,7 +238,7 @@ void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t
   for (Index p = 0; p < n; ++p) {
     // The footing touches a point at the top of its domain: the image of the seeded domain's
     // top under the point's F (eq. 13.1), carried by the step's deformation within the step.
-    offset[p] = points.initial_half_size[p](v) * points.domain_deformation(p, dim).col(v);
+    offset[p] = points.domain_deformation(p, dim) * points.initial_top_offset[p];
     for (int i = dim; i < 3; ++i) offset[p](i) = 0.0;
   }
   for (const RigidFooting& footing : phase.footings) {

@@ -162,9 +162,10 @@ TEST(RigidFootingContact, EdgeOverlapMakesTheLoadedWidthExact) {
 // load at its top nodes and the block is uniformly compressed, in series with the penalty's
 // kappa W (W the width, or R^2 / 2 per radian in axisymmetry):
 //   F = W d / (H / E_oed + 1 / kappa).
-std::string confined_block(const std::string& kinematics, int cells, double kappa) {
+std::string confined_block(const std::string& kinematics, int cells, double kappa,
+                           const std::string& cell) {
   return fmt::format(R"m(analysis: {{kinematics: {}}}
-mesh: {{generate: {{x: {{length: 1, cells: {}}}, y: {{length: {}, cells: {}}}}}}}
+mesh: {{generate: {{{}x: {{length: 1, cells: {}}}, y: {{length: {}, cells: {}}}}}}}
 materials:
   soil: {{model: linear_elastic, E: 10000, nu: 0.3}}
 bodies:
@@ -187,22 +188,23 @@ output:
     - {{quantity: reaction, footing: plate, component: y, name: force}}
     - {{quantity: reaction, boundary: bottom, component: y, name: base}}
 )m",
-                     kinematics, cells, 1.0 + 1.0 / cells, cells + 1, kappa);
+                     kinematics, cell, cells, 1.0 + 1.0 / cells, cells + 1, kappa);
 }
 
-void check_confined_block(const std::string& kinematics, int cells) {
+// `cell`: the generated mesh's cell settings (quad4 when empty).
+void check_confined_block(const std::string& kinematics, int cells, const std::string& cell = "") {
   const double E = 1e4, nu = 0.3, d = 1e-4, kappa = 1e2 * E * cells;
   const double E_oed = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
   // Width W per unit thickness, or the area R^2 / 2 per radian.
   const double W = kinematics == "axisymmetric" ? 0.5 : 1.0;
   const double expected = W * d / (1.0 / E_oed + 1.0 / kappa);
   const auto run = testing::run_spec(
-      read_model_from_string(confined_block(kinematics, cells, kappa), "block.yaml"),
+      read_model_from_string(confined_block(kinematics, cells, kappa, cell), "block.yaml"),
       "rigid_footing_block_" + kinematics);
   const double force = -run.column("force").back();  // the footing pushes down
   EXPECT_NEAR(run.column("settlement").back(), -d, 1e-15);
   // Small strain (d / H = 1e-4): the Hencky law is linear to 1e-4.
-  EXPECT_NEAR(force / expected, 1.0, 5e-4) << kinematics << ", " << cells << " cells";
+  EXPECT_NEAR(force / expected, 1.0, 5e-4) << kinematics << ", " << cells << " cells " << cell;
   // The footing's force reaches the fixed base.
   EXPECT_NEAR(run.column("base").back() / force, 1.0, 1e-6);
 }
@@ -214,6 +216,17 @@ TEST(RigidFootingBlock, ConfinedBlockReactionIsTheClosedFormPlaneStrain) {
 
 TEST(RigidFootingBlock, ConfinedBlockReactionIsTheClosedFormAxisymmetric) {
   check_confined_block("axisymmetric", 4);
+}
+
+TEST(RigidFootingBlock, ConfinedBlockReactionIsTheClosedFormOnTriangles) {
+  // The footing touches the top faces of the soil's triangles, which lie on the surface and tile
+  // it (seeding: SimplexTopFacesTileTheSurfaceAndStayBelowIt); a domain reaching above the
+  // surface would be pressed before the footing moves, and the force would be off by its
+  // penetration over the settlement.
+  for (const char* cell : {"cell: tri3, ", "cell: tri3, diagonals: crossed, "}) {
+    check_confined_block("plane_strain", 4, cell);
+    check_confined_block("axisymmetric", 4, cell);
+  }
 }
 
 }  // namespace
