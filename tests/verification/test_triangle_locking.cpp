@@ -27,6 +27,7 @@ constexpr double kPrandtl = 2.0 + std::numbers::pi;  // q_u / s_u, smooth or rou
 // Martin (2005), "Exact bearing capacity calculations using the method of characteristics",
 // Proc. 11th Int. Conf. IACMAG, Turin: rough strip, phi = 30 deg, associated flow.
 constexpr double kNgammaRough = 14.75;
+constexpr double kNgammaSmooth = 7.65;
 
 enum class Mesh { Quad4, Alternating, Crossed };
 
@@ -143,6 +144,47 @@ TEST(TriangleLocking, NgammaOnCrossedTrianglesLosesTheDilatancyLocking) {
   EXPECT_GT(qc, kNgammaRough);  // a kinematic discretisation of associated flow: from above
   // Levelled off: the load changes by less than 1 % over the last quarter of the push.
   EXPECT_LT(std::abs(crossed.at(0.002) / crossed.at(0.0015) - 1.0), 0.01);
+}
+
+TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRatio) {
+  // The same model with a rigid footing of the block's footprint (penalty contact at the points'
+  // domain tops, docs/theory.md §13) instead of the steel block. On triangles the footing touches
+  // the top faces of the points' sub-cells; a smooth base lets the soil slide, and Martin's exact
+  // solutions put the rough footing's N_gamma at 14.75 / 7.65 = 1.93 times the smooth one's.
+  // Measured (docs/validation.md §11, h = B/10): 24.14 rough (the steel block: 24.17) and 12.31
+  // smooth, both about 62 % above Martin's values.
+  const auto text = [](const std::string& contact) {
+    auto t = testing::example_text("frictional_footing/frictional_footing_ngamma.yaml");
+    t = testing::replace_once(t, "E: 50000, nu: 0.3", "E: 1000000, nu: 0.3");
+    t = testing::replace_once(t, "E: 10000000, nu: 0.2", "E: 200000000, nu: 0.2");
+    t = testing::replace_once(
+        t, "newton: {predictor: extrapolated, max_iterations: 20,",
+        "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,");
+    t = testing::replace_once(t,
+                              "  footing: {material: steel, region: {box: {min: [0, 5], max: [0.5, "
+                              "5.1]}}, points_per_cell: 4}\n",
+                              "");
+    t = testing::replace_once(t, "point_sets:\n  footing: {body: footing, region: all}\n", "");
+    t = testing::replace_once(
+        t, "    prescribed_motion:\n      - {point_set: footing, displacement: [0, \"-0.007*t\"]}",
+        "    rigid_footings:\n      - {name: footing, base: 5, x: [0, 0.5], contact: " + contact +
+            ", displacement: [0, \"-0.002*t\"]}");
+    t = testing::replace_once(t, "{quantity: displacement, point_set: footing,",
+                              "{quantity: displacement, footing: footing,");
+    t = testing::replace_once(t, "{quantity: reaction, point_set: footing,",
+                              "{quantity: reaction, footing: footing,");
+    return meshed(t, 5, Mesh::Crossed);
+  };
+  const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", -0.2, 1.0);
+  const auto smooth = run_push(text("smooth"), "tri_ngamma_rigid_smooth", -0.2, 1.0);
+  const double qr = rough.mean(0.0015, 0.002), qs = smooth.mean(0.0015, 0.002);
+  std::printf(
+      "[N_gamma, rigid footings on crossed triangles, h = B/10] rough %.2f, smooth %.2f, "
+      "ratio %.3f (Martin %.3f)\n",
+      qr, qs, qr / qs, kNgammaRough / kNgammaSmooth);
+  EXPECT_NEAR((qr / qs) / (kNgammaRough / kNgammaSmooth), 1.0, 0.05);
+  EXPECT_GT(qs, kNgammaSmooth);
+  EXPECT_GT(qr, kNgammaRough);
 }
 
 }  // namespace
