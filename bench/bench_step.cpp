@@ -206,12 +206,14 @@ void register_all() {
   }
   // The mixed p-u formulation against the displacement one, at the sizes below 10^6 points: one
   // more unknown per node, the pressure blocks of the kernel and, with the cell's average volume
-  // change (F-bar), every mixed point's dF and B computed twice (once for the average).
+  // change (F-bar), every mixed point's dF and B computed twice (once for the average). And the
+  // displacement formulation on crossed triangles: four cells and twice the nodes per square.
   for (int cells : sizes_from_environment()) {
     if (cells >= 300) continue;
     const std::string size = "/cells:" + std::to_string(cells);
     for (Formulation f : {Formulation::MixedPerPoint, Formulation::MixedCellAverage,
-                          Formulation::MixedFieldPressure, Formulation::MixedIncrementalFitted}) {
+                          Formulation::MixedFieldPressure, Formulation::MixedIncrementalFitted,
+                          Formulation::DisplacementCrossedTriangles}) {
       const std::string tag = std::string("/formulation:") + formulation_name(f);
       timed(benchmark::RegisterBenchmark(("internal_force" + size + "/threads:1" + tag).c_str(),
                                          internal_force, cells, 1, f));

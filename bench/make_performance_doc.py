@@ -369,7 +369,7 @@ def main():
     # --- mixed p-u formulation -----------------------------------------------------------------
     mixed_sizes = [c for c in sizes if med.get(("step#mixed_cell_average", c))]
     if mixed_sizes:
-        w("## The mixed p–u formulation\n")
+        w("## The mixed p–u formulation, and crossed triangles\n")
         w("The same block with the soil in the mixed p–u formulation (docs/theory.md §11, "
           "ν = 0.49): one pressure unknown more per node, the kernel's pressure blocks and "
           "the cell's pressure stabilisation; with the cell-averaged volume change (F-bar, §12, "
@@ -380,12 +380,18 @@ def main():
           "incremental pressure equation and the fitted start (`mixed_pressure_equation: "
           "incremental`, `mixed_pressure_start: fitted`, eqs. 11.8 and 11.11), each step also "
           "fits the last nodal pressure around every node (a small least-squares solve a node). "
+          "Last, the displacement formulation on the same grid with every square split into four "
+          "triangles by its crossed diagonals (`diagonals: crossed`, docs/theory.md §15), which "
+          "does not lock: four cells and about twice the nodes a square, and with 3 points a "
+          "triangle three times the points. "
           "Medians, ms; × = against the displacement formulation at the same size.\n")
         variants = [("displacement", ""), ("mixed, per point", "#mixed_per_point"),
                     ("mixed, cell average", "#mixed_cell_average"),
                     ("mixed, at the field's pressure", "#mixed_field_pressure"),
                     ("mixed, cell average, incremental, fitted start",
-                     "#mixed_incremental_fitted")]
+                     "#mixed_incremental_fitted"),
+                    ("displacement, crossed triangles (3× the points)",
+                     "#displacement_crossed_tri3")]
         w("| size | formulation | free unknowns | tangent non-zeros | internal force (1 thread) "
           "| factorise + solve | whole step | Newton iterations |")
         w("|---|---|---|---|---|---|---|---|")

@@ -22,6 +22,8 @@ const char* formulation_name(Formulation f) {
       return "mixed_field_pressure";
     case Formulation::MixedIncrementalFitted:
       return "mixed_incremental_fitted";
+    case Formulation::DisplacementCrossedTriangles:
+      return "displacement_crossed_tri3";
   }
   return "";
 }
@@ -31,15 +33,17 @@ spec::Model block_under_gravity(int cells, Formulation formulation) {
   model.title = "benchmark: elastic block under self-weight";
   model.kinematics = Kinematics::PlaneStrain;
 
+  const bool triangles = formulation == Formulation::DisplacementCrossedTriangles;
   StructuredMeshSpec mesh;
-  mesh.cell_type = CellType::Quad4;
+  mesh.cell_type = triangles ? CellType::Tri3 : CellType::Quad4;
+  if (triangles) mesh.diagonals = Diagonals::Crossed;
   mesh.axes[0] = {AxisSegment{side, cells, 1.0}};
   mesh.axes[1] = {AxisSegment{side, cells, 1.0}};
   model.mesh.generate = mesh;
 
   // A soil-like stiffness in kN, m, t: self-weight strains of about 1e-3, so Newton converges
   // in the few iterations a quasi-static soil step takes.
-  const bool mixed = formulation != Formulation::Displacement;
+  const bool mixed = formulation != Formulation::Displacement && !triangles;
   model.materials.push_back({"soil",
                              "linear_elastic",
                              {{"E", 1e5}, {"nu", mixed ? 0.49 : 0.3}, {"density", 2.0}},
@@ -58,7 +62,7 @@ spec::Model block_under_gravity(int cells, Formulation formulation) {
   body.region.kind = spec::Region::Kind::Box;
   body.region.min = Vec3(0, 0, 0);
   body.region.max = Vec3(side, side - side / cells, 0);  // the top row stays empty
-  body.points_per_cell = 4;
+  body.points_per_cell = triangles ? 3 : 4;
   model.bodies.push_back(body);
 
   spec::Phase phase;

@@ -25,13 +25,16 @@ namespace geompm::bench {
 /// (docs/theory.md §11) with each point's own volume change or its cell's average (F-bar, §12).
 /// MixedFieldPressure: the cell average with the material at the field's pressure (theory §14).
 /// MixedIncrementalFitted: the cell average with the incremental pressure equation (eq. 11.8)
-/// started from the last nodal pressure fitted (eq. 11.11).
+/// started from the last nodal pressure fitted (eq. 11.11). DisplacementCrossedTriangles: the
+/// displacement formulation on the same grid with every square split into four triangles by
+/// its crossed diagonals (docs/theory.md §15), 3 points per triangle.
 enum class Formulation {
   Displacement,
   MixedPerPoint,
   MixedCellAverage,
   MixedFieldPressure,
-  MixedIncrementalFitted
+  MixedIncrementalFitted,
+  DisplacementCrossedTriangles
 };
 const char* formulation_name(Formulation f);
 
