@@ -3536,6 +3536,33 @@ def section_cylinder(args, work):
 
 
 # --- §11 triangles against locking ------------------------------------------------------------------
+def union_jack_pressure(run):
+    """The soil points' pressure −tr σ/3 over CHECK_BOX, volume-weighted in each quarter of each
+    rectangle (the four triangles of a crossed rectangle: below, right of, above and left of its
+    centre): the rectangles' means and the RMS of the alternating part of their quarters
+    (eq. 15.1's pattern, +, −, +, −) against the RMS pressure; and the points themselves."""
+    m = run.last_vtu("points")
+    soil = m.point_data["body"].reshape(-1) == 0
+    x, y = m.points[soil, 0], m.points[soil, 1]
+    p = -m.point_data["mean_stress"].reshape(-1)[soil]
+    v = m.point_data["volume"].reshape(-1)[soil]
+    (x0, y0), (x1, y1) = CHECK_BOX
+    nx, ny = round((x1 - x0) / CHECK_H), round((y1 - y0) / CHECK_H)
+    i, j = np.floor((x - x0) / CHECK_H).astype(int), np.floor((y - y0) / CHECK_H).astype(int)
+    fx, fy = (x - x0) / CHECK_H - i - 0.5, (y - y0) / CHECK_H - j - 0.5
+    quarter = np.where(fy < -np.abs(fx), 0, np.where(fx > np.abs(fy), 1, np.where(fy > np.abs(fx), 2, 3)))
+    ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
+    num, den = np.zeros((nx, ny, 4)), np.zeros((nx, ny, 4))
+    np.add.at(num, (i[ok], j[ok], quarter[ok]), (p * v)[ok])
+    np.add.at(den, (i[ok], j[ok], quarter[ok]), v[ok])
+    quarters = np.where(den > 0, num / np.where(den > 0, den, 1), np.nan)
+    total = den.sum(axis=2)
+    means = np.where(total > 0, num.sum(axis=2) / np.where(total > 0, total, 1), np.nan)
+    alternating = (quarters[:, :, 0] - quarters[:, :, 1] + quarters[:, :, 2] - quarters[:, :, 3]) / 4
+    rms = lambda a: math.sqrt(np.nanmean(a ** 2))
+    return means, rms(alternating) / rms(means), (x, y, p)
+
+
 def on_triangles(text, crossed):
     """A model of the strip's generated quad4 mesh on tri3 cells (one diagonal per rectangle,
     alternating, or both crossed; docs/theory.md §15), 3 points per triangle in every body."""
@@ -3678,6 +3705,38 @@ def section_triangles(args, work):
       "next cell (§4 (i)); the mixed p–u formulation on quadrilaterals (§4) stays the setting for "
       "undrained clay.")
     w("")
+
+    fields = {m: union_jack_pressure(tr[(m, 0.4999, 10)]) for m in MESHES if tr[(m, 0.4999, 10)].ok}
+    w("*Pressure field* (the soil points' pressure −tr σ/3 at 0.1 B, ν = 0.4999, h = B/20, over the "
+      f"fine region under the footing, {CHECK_BOX[0][0]:g} ≤ x ≤ {CHECK_BOX[1][0]:g}, "
+      f"{CHECK_BOX[0][1]:g} ≤ y ≤ {CHECK_BOX[1][1]:g}; C as in §4, here of the points' pressure "
+      "averaged over each rectangle): "
+      + "; ".join(f"{MESHES[m]}: C = {checkerboard(f[0]):.2f}" for m, f in fields.items())
+      + " (the mixed formulation of §4: 0.04–0.11). On crossed diagonals the rectangles' means "
+      "are nearly smooth, but within each rectangle the four triangles' pressures alternate, "
+      "+, −, +, − around its centre, with an RMS amplitude "
+      + (f"{fields['crossed'][1]:.1f}" if "crossed" in fields else "—")
+      + " times the RMS pressure (figure, left; also in the far field, where the points have "
+      "hardly moved): the pattern of eq. 15.1, which holds for the rates of volume change "
+      "but not for a step's finite (logarithmic) ones, nor for points that carry the volume "
+      "change of the triangles they came through into the next one — and which at ν = 0.4999 "
+      "is a large pressure for a small volume (K = 5000 G). The load "
+      "and the rectangles' means are not affected; the stress of single points is not to be read "
+      "there: average it over each rectangle, or use the mixed formulation on quad4 cells "
+      "where the pressure field matters.")
+    w("")
+    if "crossed" in fields:
+        means, _, (px, py, pp) = fields["crossed"]
+        (x0, y0), _ = CHECK_BOX
+        gx, gy = np.meshgrid(x0 + CHECK_H * (np.arange(means.shape[0]) + 0.5),
+                             y0 + CHECK_H * (np.arange(means.shape[1]) + 0.5), indexing="ij")
+        lim = (np.nanpercentile(means, 2), np.nanpercentile(means, 98))
+        plot_pressure(os.path.join(FIGURES, "triangles_pressure.png"),
+                      [("crossed triangles, ν = 0.4999: points' pressure at 0.1 B", px, py, pp, lim),
+                       ("the same, averaged over each rectangle", gx.ravel(), gy.ravel(),
+                        means.ravel(), lim)])
+        w("![triangles, pressure](validation/triangles_pressure.png)")
+        w("")
 
     w("### Self-weight: N_γ in the rigid-plastic limit")
     w("")
