@@ -528,8 +528,9 @@ def nodal_pressure_grid_of(g):
     return structured(g.points[:, :2], g.point_data["pressure"].reshape(-1), CHECK_BOX)
 
 
-def cell_pressure_grid(run):
-    """Volume-weighted mean of the soil points' pressure −tr σ/3 in each cell of CHECK_BOX."""
+def points_over_check_box(run):
+    """The soil points of a run's last output: positions x, y, pressure −tr σ/3 p, volume v, and
+    the cell (i, j) of CHECK_BOX's grid each lies in (ok: inside it), with the grid's size."""
     m = run.last_vtu("points")
     soil = m.point_data["body"].reshape(-1) == 0
     x, y = m.points[soil, 0], m.points[soil, 1]
@@ -539,6 +540,12 @@ def cell_pressure_grid(run):
     nx, ny = round((x1 - x0) / CHECK_H), round((y1 - y0) / CHECK_H)
     i, j = np.floor((x - x0) / CHECK_H).astype(int), np.floor((y - y0) / CHECK_H).astype(int)
     ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
+    return x, y, p, v, i, j, ok, nx, ny
+
+
+def cell_pressure_grid(run):
+    """Volume-weighted mean of the soil points' pressure −tr σ/3 in each cell of CHECK_BOX."""
+    x, y, p, v, i, j, ok, nx, ny = points_over_check_box(run)
     num, den = np.zeros((nx, ny)), np.zeros((nx, ny))
     np.add.at(num, (i[ok], j[ok]), (p * v)[ok])
     np.add.at(den, (i[ok], j[ok]), v[ok])
@@ -3541,17 +3548,10 @@ def union_jack_pressure(run):
     rectangle (the four triangles of a crossed rectangle: below, right of, above and left of its
     centre): the rectangles' means and the RMS of the alternating part of their quarters
     (eq. 15.1's pattern, +, −, +, −) against the RMS pressure; and the points themselves."""
-    m = run.last_vtu("points")
-    soil = m.point_data["body"].reshape(-1) == 0
-    x, y = m.points[soil, 0], m.points[soil, 1]
-    p = -m.point_data["mean_stress"].reshape(-1)[soil]
-    v = m.point_data["volume"].reshape(-1)[soil]
-    (x0, y0), (x1, y1) = CHECK_BOX
-    nx, ny = round((x1 - x0) / CHECK_H), round((y1 - y0) / CHECK_H)
-    i, j = np.floor((x - x0) / CHECK_H).astype(int), np.floor((y - y0) / CHECK_H).astype(int)
+    x, y, p, v, i, j, ok, nx, ny = points_over_check_box(run)
+    (x0, y0), _ = CHECK_BOX
     fx, fy = (x - x0) / CHECK_H - i - 0.5, (y - y0) / CHECK_H - j - 0.5
     quarter = np.where(fy < -np.abs(fx), 0, np.where(fx > np.abs(fy), 1, np.where(fy > np.abs(fx), 2, 3)))
-    ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
     num, den = np.zeros((nx, ny, 4)), np.zeros((nx, ny, 4))
     np.add.at(num, (i[ok], j[ok], quarter[ok]), (p * v)[ok])
     np.add.at(den, (i[ok], j[ok], quarter[ok]), v[ok])
