@@ -3696,10 +3696,14 @@ def section_triangles(args, work):
       "diagonals at ν = 0.4999 the mean falls with h, " + " → ".join(f"{v:.2f}" for v in crossed_h)
       + " (h = B/10, B/20, B/40; "
       + " → ".join(f"{(v / PRANDTL - 1) * 100:+.1f} %" for v in crossed_h) + ")"
-      + (lambda e: f", observed order {e[0]:.2f}, Richardson extrapolation h → 0: {e[1]:.3f} "
-         f"({(e[1] / PRANDTL - 1) * 100:+.1f} % from 5.14; **Prandtl by extrapolation: "
-         f"{verdict(abs(e[1] / PRANDTL - 1) <= 0.05)}**, within 5 %)" if e else ", not monotonic in h")(
-          richardson(crossed_h))
+      + (lambda e, first: f", observed order {e[0]:.2f}, Richardson extrapolation h → 0: {e[1]:.3f} "
+         f"({(e[1] / PRANDTL - 1) * 100:+.1f} % from 5.14), and {first:.3f} "
+         f"({(first / PRANDTL - 1) * 100:+.1f} %) from the two finest meshes at first order; "
+         f"**Prandtl by extrapolation: {verdict(max(abs(e[1] / PRANDTL - 1), abs(first / PRANDTL - 1)) <= 0.05)}**, "
+         "both within 5 % (the means carry the curves' noise of about ±1 %, which moves the "
+         "observed order of three values a lot: read it as consistent with Prandtl at an order "
+         "between 0.7 and 1, not as a measured order)"
+         if e else ", not monotonic in h")(richardson(crossed_h), 2 * crossed_h[2] - crossed_h[1])
       + ". Constant-strain triangles take each point's strain from three nodes, so the "
       "mechanism's curved slip lines cross them in steps, and the steel block drags the soil of the "
       "next cell (§4 (i)); the mixed p–u formulation on quadrilaterals (§4) stays the setting for "

@@ -926,7 +926,6 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
   std::vector<Index> dofs, cell_nodes, nodes;
   const int* outer = tangent ? tangent->outerIndexPtr() : nullptr;
   const int* inner = tangent ? tangent->innerIndexPtr() : nullptr;
-  // Point p's weights over `over` (sorted active nodes holding its own stencil).
   // Point p's weights over `over` (sorted active nodes holding its own stencil), into `out`.
   const auto fill_stencil = [&](Index p, const std::vector<Index>& over, Dynamic& out) {
     const Index begin = wide_start_[p], end = wide_start_[p + 1];
