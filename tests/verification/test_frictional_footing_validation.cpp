@@ -50,7 +50,7 @@ constexpr double kNgammaSmooth = 7.65;
 
 // The examples' model without VTK files, on the strip mesh with n cells under the half-width
 // (the examples have n = 10, h = B/20), as scripts/validation_report.py refines it.
-std::string model(const std::string& file, int n) {
+std::string model(const std::string& file, int n, double push_end = 0.03) {
   auto text = testing::replace_once(testing::example_text("frictional_footing/" + file),
                                     "vtk: {every: 10}", "vtk: {every: 0}");
   // The examples push only as far as their runs finish; pushed 0.03 B as in the report, the runs
@@ -58,6 +58,12 @@ std::string model(const std::string& file, int n) {
   for (const char* push : {"\"-0.01*t\"", "\"-0.007*t\"", "\"-0.004*t\""})
     if (text.find(push) != std::string::npos)
       text = testing::replace_once(text, push, "\"-0.03*t\"");
+  // A test that reads the curve only up to push_end ends the push phase there: the same steps as
+  // the report's run up to that settlement, without the costly ones after it.
+  if (push_end < 0.03)
+    text = testing::replace_once(
+        text, "name: push\n    duration: 1.0\n",
+        "name: push\n    duration: " + std::to_string(push_end / 0.03) + "\n");
   return testing::strip_mesh(text, n);
 }
 
@@ -137,22 +143,26 @@ TEST(FrictionalFootingValidation, SurchargeNqOverEstimateFallsWithTheMesh) {
 }
 
 TEST(FrictionalFootingValidation, SurchargeNqNearPrandtlReissnerOnTheFineMesh) {
-  const auto fine = run_push(model("frictional_footing_nq.yaml", 20), "nq_b40", kSurchargeScale);
+  const auto fine =
+      run_push(model("frictional_footing_nq.yaml", 20, 0.0105), "nq_b40", kSurchargeScale);
   const double q = fine.at(0.01) - kCohesionShare;
   std::printf("[N_q, h = B/40] %.2f at 0.01 B (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
               kNq);
-  // docs/validation.md §9: +5.0 % at 0.01 B on h = B/40 (the run stops at 0.024 B, Newton at
-  // the smallest step in the heave beside the footing).
+  // docs/validation.md §9: +5.0 % at 0.01 B on h = B/40 (the report's run stops at 0.024 B,
+  // Newton at the smallest step in the heave beside the footing; pushed to 0.0105 B here).
   EXPECT_GT(q, kNq);
   EXPECT_LT(q, 1.08 * kNq);
   EXPECT_LE(fine.most_newton_iterations, 10);
 }
 
 TEST(FrictionalFootingValidation, SurchargeNqWithinFivePercentOfPrandtlReissnerAtBOver80) {
-  // The finest mesh of docs/validation.md §9 (h = B/80, 40 cells under the half-width; about 10
-  // minutes on one core): 4.1 % above N_q = 18.40 at 0.01 B; the run stops at 0.011 B (Newton at
-  // the smallest step). The target, as for the Tresca strip: within +5 %.
-  const auto finest = run_push(model("frictional_footing_nq.yaml", 40), "nq_b80", kSurchargeScale);
+  // The finest mesh of docs/validation.md §9 (h = B/80, 40 cells under the half-width): 4.1 %
+  // above N_q = 18.40 at 0.01 B. The target, as for the Tresca strip: within +5 %. Pushed only to
+  // 0.0105 B (the report's run goes on to where Newton fails at the smallest step, about 0.011 B,
+  // which took the test to 19 minutes on a slow 2-core machine), so the Newton count below is of
+  // the steps up to there.
+  const auto finest =
+      run_push(model("frictional_footing_nq.yaml", 40, 0.0105), "nq_b80", kSurchargeScale);
   const double q = finest.at(0.01) - kCohesionShare;
   std::printf("[N_q, h = B/80] %.2f at 0.01 B (%+.1f %% of N_q = %.2f)\n", q, (q / kNq - 1) * 100,
               kNq);
