@@ -12,5 +12,5 @@ cd build
 # (docs/performance.md, note 4). Waiting threads sleep instead, unless the caller says otherwise.
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 # The timeout stops a hung test, not a slow one: the longest (N_q on h = B/80, 65 536 points)
-# takes 17 minutes beside another test on a slow 2-core machine, about half that on CI's.
+# took 17 minutes (1036 s) beside another test on a 2-core development machine, 2026-11-25.
 ctest --output-on-failure -j "$(nproc)" --timeout 1800 "$@"

@@ -3579,7 +3579,9 @@ NG_ROWS = dict(MESHES, crossed_rough="tri3, crossed diagonals, 3 points; rough r
 NG_STYLE = dict(MESH_STYLE, crossed_rough=":", crossed_smooth=":")
 # The B/40 crossed run again with the soil (and steel) 10 times stiffer, pushed a tenth as far: its
 # settlement x 10 is comparable with the other rows' (the same curve for a rigid-plastic soil).
-NG_ROWS["crossed_stiffer"] = "tri3, crossed diagonals, 3 points; 10 E, settlement × 10"
+NG_STIFFER = 10
+NG_ROWS["crossed_stiffer"] = (f"tri3, crossed diagonals, 3 points; {NG_STIFFER} E, "
+                              f"settlement × {NG_STIFFER}")
 NG_STYLE["crossed_stiffer"] = "--"
 
 
@@ -3640,7 +3642,7 @@ def section_triangles(args, work):
     tr = {k: tr[f"tri_tresca_{k[0]}_{k[1]}_{k[2]}"] for k in tresca}
     ngamma = {(mesh, n): ngamma_stiff_text(n, mesh) for mesh in MESHES for n in (5, 10)}
     ngamma[("crossed", 20)] = ngamma_stiff_text(20, "crossed")
-    ngamma[("crossed_stiffer", 20)] = ngamma_stiff_text(20, "crossed", stiffer=10)
+    ngamma[("crossed_stiffer", 20)] = ngamma_stiff_text(20, "crossed", stiffer=NG_STIFFER)
     for contact in ("rough", "smooth"):
         for n in (5, 10):
             ngamma[(f"crossed_{contact}", n)] = ngamma_stiff_text(n, "crossed", contact)
@@ -3772,12 +3774,14 @@ def section_triangles(args, work):
       f"{NG_STIFF_READ[0]:g}–{NG_STIFF_READ[1]:g} B | error | steps | Newton max / mean | points | wall time |")
     w("|---|---|---|---|---|---|---|---|---|---|---|---|")
     series = []
-    ng_mean = {}
+    ng_mean, stops = {}, {}  # stops: where runs stopped, settlement / B (scaled)
     for (mesh, n), r in ng.items():
         label = f"| {NG_ROWS[mesh]} | B/{2 * n} |"
         x, q = push_curve(r, SG) if r.h is not None else (np.array([0.0]), np.array([0.0]))
         if mesh == "crossed_stiffer":
-            x = 10 * x
+            x = NG_STIFFER * x
+        if not r.ok and r.h is not None:
+            stops[(mesh, n)] = x[-1]
         if not r.ok:
             w(f"{label} stopped at {x[-1]:.4f} B (N_γ = {q[-1]:.2f}): {stop_reason(r)} | | | | | | | | | "
               f"{r.wall:.0f} s |")
@@ -3800,12 +3804,8 @@ def section_triangles(args, work):
                 ylabel="N_γ", ylim=(0, 40), legend_outside=True)
     w("![triangles, N_gamma](validation/triangles_ngamma.png)")
     w("")
-    def stop_at(key):
-        r = ng.get(key)
-        if r is None or r.ok or r.h is None:
-            return float("nan")
-        return (10 if key[0] == "crossed_stiffer" else 1) * push_curve(r, SG)[0][-1]
-    base_stop, stiff_stop = stop_at(("crossed", 20)), stop_at(("crossed_stiffer", 20))
+    base_stop = stops.get(("crossed", 20), float("nan"))
+    stiff_stop = stops.get(("crossed_stiffer", 20), float("nan"))
     crossed = [ng_mean.get(("crossed", n), float("nan")) for n in (5, 10, 20)]
     extrapolated = richardson(crossed) if all(np.isfinite(crossed)) else None
     ok = extrapolated is not None and abs(extrapolated[1] / NG_ROUGH - 1) <= 0.05

@@ -158,9 +158,8 @@ TEST(FrictionalFootingValidation, SurchargeNqNearPrandtlReissnerOnTheFineMesh) {
 TEST(FrictionalFootingValidation, SurchargeNqWithinFivePercentOfPrandtlReissnerAtBOver80) {
   // The finest mesh of docs/validation.md §9 (h = B/80, 40 cells under the half-width): 4.1 %
   // above N_q = 18.40 at 0.01 B. The target, as for the Tresca strip: within +5 %. Pushed only to
-  // 0.0105 B (the report's run goes on to where Newton fails at the smallest step, about 0.011 B,
-  // which took the test to 19 minutes on a slow 2-core machine), so the Newton count below is of
-  // the steps up to there.
+  // 0.0105 B (the report's run goes on to where Newton fails at the smallest step, about 0.011 B),
+  // so the Newton count below is of the steps up to there.
   const auto finest =
       run_push(model("frictional_footing_nq.yaml", 40, 0.0105), "nq_b80", kSurchargeScale);
   const double q = finest.at(0.01) - kCohesionShare;
