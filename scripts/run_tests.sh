@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fresh machine -> installed dependencies, built geompm, and the whole test suite run
-# (unit, verification and example tiers; ctest -L unit runs the fast tier alone).
+# (unit, verification and example tiers and the long validation cases; ctest -L unit runs the
+# fast tier alone, ctest -LE validation_long all but the long cases).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

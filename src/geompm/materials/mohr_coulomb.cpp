@@ -38,6 +38,11 @@ MohrCoulomb::MohrCoulomb(const Parameters& p)
   // Eq. M.13: the tension cut-off, tau_a <= t for each principal stress, associated.
   if (p.has_tension_cutoff)
     for (int a = 0; a < 3; ++a) planes_.push_back({Vec3::Unit(a), Vec3::Unit(a), p.tension_cutoff});
+  if (p.apex_rounding > 0) {
+    // docs/materials.md §3.6: the smooth hyperbolic surface and its potential of the same form.
+    yield_.emplace(p.friction_angle, p.cohesion, p.apex_rounding, p.lode_transition);
+    potential_.emplace(p.dilation_angle, 0.0, p.apex_rounding, p.lode_transition);
+  }
   // Planes first, then edges, then vertices (eq. M.5 picks the one face that satisfies the
   // Kuhn-Tucker conditions; the order only decides between equal answers on a region boundary).
   faces_ = active_sets_up_to_three(static_cast<int>(planes_.size()));
@@ -45,7 +50,8 @@ MohrCoulomb::MohrCoulomb(const Parameters& p)
 
 std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
   ParameterReader r("mohr_coulomb", map,
-                    {"c", "phi", "psi", "E", "nu", "density", "tension_cutoff", "surface_tangent"});
+                    {"c", "phi", "psi", "E", "nu", "density", "tension_cutoff", "surface_tangent",
+                     "apex_rounding", "lode_transition"});
   Parameters p;
   p.cohesion = ParameterReader::non_negative("c", r.required("c"));
   p.friction_angle = r.required("phi");
@@ -69,7 +75,39 @@ std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
 
   const double apex = p.friction_angle > 0 ? p.cohesion / std::tan(radians(p.friction_angle))
                                            : std::numeric_limits<double>::infinity();
+  if (map.count("apex_rounding")) {
+    p.apex_rounding = ParameterReader::positive("apex_rounding", r.required("apex_rounding"));
+    // docs/materials.md §3.6: the rounded surface's tip, c / tan(phi) - a, must lie in tension so
+    // that stress-free soil is inside it; with psi = 0 the potential has no volumetric part to
+    // bring a state in hydrostatic tension back to the tip.
+    if (!(p.friction_angle > 0 && p.apex_rounding < apex))
+      throw ParameterError("apex_rounding",
+                           fmt::format("'apex_rounding' must be below the apex of the "
+                                       "Mohr-Coulomb surface, c / tan(phi) = {:g} (phi > 0), so "
+                                       "that stress-free soil lies inside the rounded surface; "
+                                       "got {:g}",
+                                       apex, p.apex_rounding));
+    p.lode_transition = r.optional("lode_transition", p.lode_transition);
+    if (!(p.lode_transition > 0 && p.lode_transition < 30))
+      throw ParameterError("lode_transition",
+                           fmt::format("'lode_transition' (degrees, where the rounding of the "
+                                       "corners starts) must lie in (0, 30), got {}",
+                                       p.lode_transition));
+    if (!(p.dilation_angle > 0))
+      throw ParameterError("apex_rounding",
+                           "'apex_rounding' needs a dilation angle 'psi' > 0: with psi = 0 the "
+                           "plastic flow cannot change the volume, and a state in hydrostatic "
+                           "tension has no return to the rounded apex");
+  } else if (map.count("lode_transition")) {
+    throw ParameterError("lode_transition",
+                         "'lode_transition' is a parameter of the rounded surface: give "
+                         "'apex_rounding' too");
+  }
   if (map.count("tension_cutoff")) {
+    if (p.apex_rounding > 0)
+      throw ParameterError("tension_cutoff",
+                           "'tension_cutoff' cannot be combined with 'apex_rounding': the "
+                           "rounded surface is one smooth surface, without cut-off planes");
     p.tension_cutoff =
         ParameterReader::non_negative("tension_cutoff", r.required("tension_cutoff"));
     if (p.tension_cutoff > apex * (1 + 1e-12))
@@ -79,9 +117,10 @@ std::unique_ptr<Material> MohrCoulomb::create(const ParameterMap& map) {
                                        apex, p.tension_cutoff));
     p.tension_cutoff = std::min(p.tension_cutoff, apex);
     p.has_tension_cutoff = true;
-  } else if (p.friction_angle > 0) {
+  } else if (p.friction_angle > 0 && p.apex_rounding == 0) {
     // At the apex the cut-off only adds flow directions there: the apex return of dSPO §8.2 for
-    // any psi, including psi = 0, whose own flow directions cannot change the volume.
+    // any psi, including psi = 0, whose own flow directions cannot change the volume. (A rounded
+    // surface lies inside the cone, below tau_1 = c / tan(phi): a cut-off there is never met.)
     p.tension_cutoff = apex;
     p.has_tension_cutoff = true;
   }
@@ -114,8 +153,12 @@ double MohrCoulomb::strain_energy(const Mat3& eps) const {
 
 PrincipalReturn MohrCoulomb::principal_return(const Vec3& trial_principal_strain,
                                               const InternalVariables& internal) const {
+  const SurfaceTangent side = surface_side(p_.surface_tangent, internal[plastic_strain_index]);
+  if (yield_)
+    return return_to_hyperbolic_surface(trial_principal_strain, principal_elasticity_, *yield_,
+                                        *potential_, side);
   return return_to_yield_planes(trial_principal_strain, principal_elasticity_, planes_, faces_,
-                                surface_side(p_.surface_tangent, internal[plastic_strain_index]));
+                                side);
 }
 
 void MohrCoulomb::update(const Mat3& eps, const InternalVariables& internal_n,

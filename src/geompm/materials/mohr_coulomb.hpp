@@ -11,10 +11,17 @@
 // plane, edges and corners (docs/materials.md §3.3). The stress is the effective Kirchhoff stress
 // (= Cauchy stress to within the elastic volume change); in a drained analysis it is the total
 // stress.
+//
+// With `apex_rounding` a > 0 the surface is instead the smooth hyperbolic approximation of Abbo &
+// Sloan (1995), apex and corners rounded (hyperbolic_surface.hpp), with a potential of the same
+// form in psi, and the return is solved by Newton's method (hyperbolic_return.hpp,
+// docs/materials.md §3.6).
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "geompm/materials/hyperbolic_return.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/materials/principal_return.hpp"
 
@@ -31,6 +38,8 @@ class MohrCoulomb final : public Material {
     double density = 0;
     double tension_cutoff = 0;  // largest principal stress, <= c / tan(phi)
     bool has_tension_cutoff = false;
+    double apex_rounding = 0;     // a: the tip's offset from the cone's apex (stress); 0: sharp
+    double lode_transition = 25;  // theta_T, degrees: the corners' rounding starts there
     SurfaceTangent surface_tangent = SurfaceTangent::elastic;  // docs/materials.md §1.7
   };
 
@@ -72,7 +81,8 @@ class MohrCoulomb final : public Material {
   PrincipalReturn principal_return(const Vec3& trial_principal_strain,
                                    const InternalVariables& internal) const;
 
-  /// The hydrostatic stress of the apex, c / tan(phi) (infinite for phi = 0).
+  /// The hydrostatic stress of the apex, c / tan(phi) (infinite for phi = 0); with a rounded
+  /// apex, that of the sharp cone, a above the rounded surface's tip.
   double apex() const;
   const std::vector<YieldPlane>& planes() const { return planes_; }
 
@@ -82,6 +92,8 @@ class MohrCoulomb final : public Material {
   Mat3 principal_elasticity_;
   Tensor4 elasticity_;
   std::vector<YieldPlane> planes_;
+  // With a rounded apex: the hyperbolic surface and its potential (docs/materials.md §3.6).
+  std::optional<HyperbolicSurface> yield_, potential_;
   std::vector<unsigned> faces_;  // the candidate active sets, in the order they are tried
 };
 

@@ -12,10 +12,6 @@ namespace geompm {
 
 namespace {
 
-// Kuhn-Tucker conditions are checked to this fraction of the largest stress in play: far above
-// the round-off of the linear solves, far below any stress that matters.
-constexpr double kkt_tolerance = 1e-9;
-
 // The inverse of the leading k x k block (k <= 3: at most three planes meet at a vertex of a
 // surface in principal space) in closed form; false when the block is singular relative to the
 // Hadamard bound |det| <= product of the row norms (planes that do not meet in an edge or a

@@ -27,6 +27,10 @@ struct YieldPlane {
   double limit = 0;
 };
 
+/// Kuhn-Tucker conditions are checked to this fraction of the largest stress in play: far above
+/// the round-off of the linear solves, far below any stress that matters.
+inline constexpr double kkt_tolerance = 1e-9;
+
 /// A surface has at most this many planes (Mohr-Coulomb with its tension cut-off has six).
 inline constexpr int max_yield_planes = 8;
 

@@ -2,8 +2,11 @@
 // strains built from a chosen returned stress (so that the region of a trial state is known).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "geompm/materials/material.hpp"
@@ -83,6 +86,19 @@ inline Vec3 trial_strain_for(const Vec3& returned, const Mat3& de,
   for (int k = 0; k < static_cast<int>(planes.size()); ++k)
     if (mask & (1u << k)) eps += gamma.at(j++) * planes[k].flow;
   return eps;
+}
+
+/// The checks every principal return must pass: the returned stresses keep the order
+/// tau_1 >= tau_2 >= tau_3 (to `tol`), and an elastic return (active 0) carries no plastic strain.
+/// Returns the plastic strain D^-1 (tau_tr - tau) of a plastic return, nullopt for an elastic one.
+inline std::optional<Vec3> checked_plastic_strain(const PrincipalReturn& r, const Vec3& trial,
+                                                  const Mat3& de, double tol) {
+  EXPECT_GE(r.stress(0), r.stress(1) - tol);
+  EXPECT_GE(r.stress(1), r.stress(2) - tol);
+  const Vec3 plastic = de.inverse() * (trial - r.stress);
+  if (r.active != 0) return plastic;
+  EXPECT_LT(plastic.norm(), 1e-14);
+  return std::nullopt;
 }
 
 /// The principal values of eps sorted descending (the input order of principal_return).

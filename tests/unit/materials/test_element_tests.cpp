@@ -161,6 +161,46 @@ TEST(ElementTests, MohrCoulombDrainedTriaxialCompression) {
     }
 }
 
+// The same test on the rounded surface (docs/materials.md §3.6, eq. M.20): in triaxial
+// compression theta = +30 deg, where K = A - B (the corner rounded from theta_T), and with
+// p = -(p0 + q/3), J = q / sqrt(3), F = 0 reads
+//   sqrt(q^2 K^2 / 3 + a^2 sin^2 phi) = c cos phi + (p0 + q/3) sin phi,
+// a quadratic in q. A and B are computed here from K's continuity at theta_T, as in Abbo & Sloan.
+TEST(ElementTests, RoundedMohrCoulombDrainedTriaxialCompression) {
+  const double c = 5, E = 1e4, nu = 0.3, phi = 30, psi = 20, transition = 25;
+  const double sf = std::sin(phi * deg), cf = std::cos(phi * deg), t = transition * deg;
+  const double dk = -std::sin(t) - std::cos(t) * sf / std::sqrt(3.0);  // dK/dtheta at theta_T
+  const double b = -dk / (3 * std::cos(3 * t));
+  const double k30 = std::cos(t) - std::sin(t) * sf / std::sqrt(3.0) + b * std::sin(3 * t) - b;
+  for (double a : {0.5, 5.0, 8.0})  // below the apex c cot(phi) = 8.66
+    for (double p0 : {2.0, 20.0, 100.0}) {
+      const double s0 = c * cf + p0 * sf;
+      const double qa = k30 * k30 / 3 - sf * sf / 9, qb = -2 * sf / 3 * s0,
+                   qc = a * a * sf * sf - s0 * s0;
+      const double q_f = (-qb + std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
+      MohrCoulomb::Parameters parameters;
+      parameters.cohesion = c;
+      parameters.friction_angle = phi;
+      parameters.dilation_angle = psi;
+      parameters.youngs_modulus = E;
+      parameters.poisson_ratio = nu;
+      parameters.apex_rounding = a;
+      parameters.lode_transition = transition;
+      const MohrCoulomb sand(parameters);
+      SinglePointDriver driver(sand);
+      driver.follow(isotropic(p0));
+      const auto history = driver.follow(drained_triaxial(-0.2, p0, 400));
+      // Never above the limit beyond the model's tolerance: a trial state within
+      // kkt_tolerance (1e-9 of the stress) of the surface is taken as elastic.
+      for (const DriverState& state : history)
+        EXPECT_LE(state.stress(0, 0) - state.stress(2, 2), q_f * (1 + kkt_tolerance))
+            << (state.stress(0, 0) - state.stress(2, 2)) / q_f - 1;
+      const DriverState& last = history.back();
+      EXPECT_NEAR(last.stress(0, 0) - last.stress(2, 2), q_f, 1e-9 * q_f)
+          << "a " << a << " p0 " << p0;
+    }
+}
+
 // Drained triaxial extension (axial stress rising from -p0 with the radial stresses held):
 // tau_1 is the axial stress, tau_2 = tau_3 = -p0, the right edge; f = 0 gives
 //   q_e = tau_1 - tau_3 = 2 (c cos phi + p0 sin phi) / (1 + sin phi).
