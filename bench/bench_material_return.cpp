@@ -11,7 +11,6 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -24,19 +23,12 @@ namespace {
 constexpr int states = 4096;
 constexpr double c = 10, phi = 30, psi = 30, E = 1e4, nu = 0.3;
 
-MohrCoulomb soil(double rounding) {
-  MohrCoulomb::Parameters p;
-  p.cohesion = c;
-  p.friction_angle = phi;
-  p.dilation_angle = psi;
-  p.youngs_modulus = E;
-  p.poisson_ratio = nu;
-  p.apex_rounding = rounding;
-  if (rounding == 0) {  // the default cut-off at the apex, as MohrCoulomb::create sets it
-    p.has_tension_cutoff = true;
-    p.tension_cutoff = c / std::tan(phi * std::numbers::pi / 180);
-  }
-  return MohrCoulomb(p);
+// Through the model file's parameters, as a model file sets them (the cone with its default
+// cut-off at the apex, or the rounded surface).
+std::unique_ptr<Material> soil(double rounding) {
+  ParameterMap p{{"c", c}, {"phi", phi}, {"psi", psi}, {"E", E}, {"nu", nu}};
+  if (rounding > 0) p["apex_rounding"] = rounding;
+  return MohrCoulomb::create(p);
 }
 
 // Trial strains of random orientation whose stresses lie around `mean` (kPa) with a deviator of
@@ -57,12 +49,12 @@ std::vector<Mat3> trial_strains(double mean, double spread) {
 }
 
 void update_all(benchmark::State& state, double rounding, double mean, double spread) {
-  const MohrCoulomb model = soil(rounding);
+  const std::unique_ptr<Material> model = soil(rounding);
   const std::vector<Mat3> strains = trial_strains(mean, spread);
   StressUpdate out;
   for (auto _ : state)
     for (const Mat3& eps : strains) {
-      model.update(eps, {}, out);
+      model->update(eps, {}, out);
       benchmark::DoNotOptimize(out.kirchhoff);
     }
   state.SetItemsProcessed(state.iterations() * states);

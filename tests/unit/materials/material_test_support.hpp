@@ -15,11 +15,9 @@
 
 namespace geompm::test_support {
 
-/// A Mohr-Coulomb soil; the tension cut-off is `cutoff` when given (>= 0), otherwise at the apex
-/// c / tan(phi) (none for phi = 0).
-inline MohrCoulomb make_mohr_coulomb(double c, double phi, double psi, double E, double nu,
-                                     double cutoff = -1,
-                                     SurfaceTangent surface = SurfaceTangent::elastic) {
+/// The parameters every Mohr-Coulomb soil of the tests shares.
+inline MohrCoulomb::Parameters mohr_coulomb_parameters(double c, double phi, double psi, double E,
+                                                       double nu, SurfaceTangent surface) {
   MohrCoulomb::Parameters p;
   p.surface_tangent = surface;
   p.cohesion = c;
@@ -27,11 +25,31 @@ inline MohrCoulomb make_mohr_coulomb(double c, double phi, double psi, double E,
   p.dilation_angle = psi;
   p.youngs_modulus = E;
   p.poisson_ratio = nu;
+  return p;
+}
+
+/// A Mohr-Coulomb soil; the tension cut-off is `cutoff` when given (>= 0), otherwise at the apex
+/// c / tan(phi) (none for phi = 0).
+inline MohrCoulomb make_mohr_coulomb(double c, double phi, double psi, double E, double nu,
+                                     double cutoff = -1,
+                                     SurfaceTangent surface = SurfaceTangent::elastic) {
+  MohrCoulomb::Parameters p = mohr_coulomb_parameters(c, phi, psi, E, nu, surface);
   const double apex = phi > 0 ? c / std::tan(phi * M_PI / 180) : 0;
   if (phi > 0 || cutoff >= 0) {
     p.has_tension_cutoff = true;
     p.tension_cutoff = cutoff >= 0 ? cutoff : apex;
   }
+  return MohrCoulomb(p);
+}
+
+/// A Mohr-Coulomb soil with the rounded surface (docs/materials.md §3.6): apex rounding a, the
+/// corners from `transition` degrees.
+inline MohrCoulomb make_rounded_mohr_coulomb(double c, double phi, double psi, double E, double nu,
+                                             double a, double transition = 25,
+                                             SurfaceTangent surface = SurfaceTangent::elastic) {
+  MohrCoulomb::Parameters p = mohr_coulomb_parameters(c, phi, psi, E, nu, surface);
+  p.apex_rounding = a;
+  p.lode_transition = transition;
   return MohrCoulomb(p);
 }
 

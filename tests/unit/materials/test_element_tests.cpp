@@ -178,15 +178,8 @@ TEST(ElementTests, RoundedMohrCoulombDrainedTriaxialCompression) {
       const double qa = k30 * k30 / 3 - sf * sf / 9, qb = -2 * sf / 3 * s0,
                    qc = a * a * sf * sf - s0 * s0;
       const double q_f = (-qb + std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
-      MohrCoulomb::Parameters parameters;
-      parameters.cohesion = c;
-      parameters.friction_angle = phi;
-      parameters.dilation_angle = psi;
-      parameters.youngs_modulus = E;
-      parameters.poisson_ratio = nu;
-      parameters.apex_rounding = a;
-      parameters.lode_transition = transition;
-      const MohrCoulomb sand(parameters);
+      const MohrCoulomb sand =
+          test_support::make_rounded_mohr_coulomb(c, phi, psi, E, nu, a, transition);
       SinglePointDriver driver(sand);
       driver.follow(isotropic(p0));
       const auto history = driver.follow(drained_triaxial(-0.2, p0, 400));

@@ -32,16 +32,8 @@ struct Case {
 // Associated and non-associated, a rounding small and large against the apex c / tan(phi).
 const Case cases[] = {{10, 30, 30, 2}, {10, 30, 10, 2}, {1, 35, 20, 1.2}, {0.01, 30, 30, 0.015}};
 
-MohrCoulomb make_rounded(const Case& cs, SurfaceTangent surface = SurfaceTangent::elastic) {
-  MohrCoulomb::Parameters p;
-  p.cohesion = cs.c;
-  p.friction_angle = cs.phi;
-  p.dilation_angle = cs.psi;
-  p.youngs_modulus = E;
-  p.poisson_ratio = nu;
-  p.apex_rounding = cs.a;
-  p.surface_tangent = surface;
-  return MohrCoulomb(p);
+MohrCoulomb make_rounded(const Case& cs) {
+  return make_rounded_mohr_coulomb(cs.c, cs.phi, cs.psi, E, nu, cs.a);
 }
 
 double radians(double d) { return d * std::numbers::pi / 180; }
