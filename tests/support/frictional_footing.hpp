@@ -104,4 +104,18 @@ inline const double kCohesionShare = 0.01 * kNc;
 // N_gamma = q / (gamma B / 2) = 2 x 2 x force / (20 x 1).
 inline constexpr double kGammaScale = -0.2;
 
+// N_q read as docs/validation.md §9 reads it: the surcharge footing on the strip mesh with n cells
+// under the half-width, pushed to 0.0105 B, at a settlement of 0.01 B, less the cohesion's share.
+struct NqReading {
+  double nq;
+  int most_newton_iterations;  // in the steps up to 0.0105 B
+};
+inline NqReading nq_at_one_percent(int n, const std::string& name) {
+  const Push push = run_push(model("frictional_footing_nq.yaml", n, 0.0105), name, kSurchargeScale);
+  const double q = push.at(0.01) - kCohesionShare;
+  std::printf("[N_q, h = B/%d] %.2f at 0.01 B (%+.1f %% of N_q = %.2f)\n", 2 * n, q,
+              (q / kNq - 1) * 100, kNq);
+  return {q, push.most_newton_iterations};
+}
+
 }  // namespace geompm::testing::frictional_footing

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "example_text.hpp"
+#include "frictional_footing.hpp"
 #include "run_model.hpp"
 #include "strip_mesh.hpp"
 
@@ -26,10 +27,10 @@ namespace geompm {
 namespace {
 
 constexpr double kPrandtl = 2.0 + std::numbers::pi;  // q_u / s_u, smooth or rough (REFERENCES §3)
-// Martin (2005), "Exact bearing capacity calculations using the method of characteristics",
-// Proc. 11th Int. Conf. IACMAG, Turin: rough strip, phi = 30 deg, associated flow.
-constexpr double kNgammaRough = 14.75;
-constexpr double kNgammaSmooth = 7.65;
+// Martin's (2005) exact N_gamma (rough 14.75, smooth 7.65) and Prandtl's N_c at phi = 30 deg.
+using testing::frictional_footing::kNc;
+using testing::frictional_footing::kNgammaRough;
+using testing::frictional_footing::kNgammaSmooth;
 
 enum class Mesh { Quad4, Alternating, Crossed };
 
@@ -197,9 +198,10 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   // cone (the cohesionless soil at the footing's edge at the apex: docs/validation.md §11), with
   // the smooth hyperbolic surface instead (docs/materials.md §3.6): c = 0.1 kPa, apex_rounding
   // 0.15 kPa, corners from 29 deg; 10 times stiffer and pushed 0.0002 B (settlement x 10 is the
-  // other runs'). The cohesion adds 2 c N_c / (gamma B) = 0.30 to N_gamma (N_c = 30.14 at
-  // phi = 30 deg, Prandtl), so the reference is Martin's 14.75 + 0.30 = 15.05. Measured (§11):
-  // 24.06 on h = B/10, 18.26 on h = B/40, extrapolated about 10 % above the reference.
+  // other runs'). The cohesion adds 2 c N_c / (gamma B) = 0.30 to N_gamma by superposition
+  // (N_c = 30.14 at phi = 30 deg, Prandtl), so the reference is Martin's 14.75 + 0.30 = 15.05
+  // (§11 measures the cohesion's part at about twice that: the reference is a lower one). Measured
+  // (§11): 24.06 on h = B/10, 18.26 on h = B/40, extrapolated about 10 % above the reference.
   const auto text = [](int n) {
     return meshed(testing::replace_once(ngamma_rigid_plastic(10), "c: 0.01, phi: 30, psi: 30,",
                                         "c: 0.1, phi: 30, psi: 30, apex_rounding: 0.15, "
@@ -208,7 +210,7 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   };
   const auto coarse = run_push(text(5), "tri_ngamma_rounded_b10", -0.2, 1.0);
   const auto fine = run_push(text(20), "tri_ngamma_rounded_b40", -0.2, 1.0);  // must finish
-  const double reference = kNgammaRough + 2 * 0.1 * 30.14 / 20;
+  const double reference = kNgammaRough + 2 * 0.1 * kNc / 20;                 // gamma B = 20 kPa
   const double qc = coarse.mean(0.00015, 0.0002), qf = fine.mean(0.00015, 0.0002);
   std::printf("[N_gamma, rounded apex, crossed triangles] B/10 %.2f, B/40 %.2f (reference %.2f)\n",
               qc, qf, reference);

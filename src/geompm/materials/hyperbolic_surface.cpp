@@ -67,11 +67,11 @@ HyperbolicSurface::Derivatives HyperbolicSurface::derivatives(const Vec3& tau) c
   Vec3 dq;
   Mat3 d2q;
   if (!(u > 1e-24 * tau.squaredNorm())) {
-    // On the hydrostatic axis theta is undefined and Q = u K(0)^2 to second order.
-    const double k2 = lode_factor(0.0).k * lode_factor(0.0).k;
-    q = u * k2;
-    dq = k2 * s;
-    d2q = k2 * projection;
+    // On the hydrostatic axis theta is undefined and Q = u K(0)^2 = u to second order
+    // (K(0) = cos 0 = 1: theta = 0 lies below any transition angle).
+    q = u;
+    dq = s;
+    d2q = projection;
   } else {
     const double v = s(0) * s(1) * s(2);
     const Vec3 dv = projection * Vec3(s(1) * s(2), s(0) * s(2), s(0) * s(1));
