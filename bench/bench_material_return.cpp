@@ -3,10 +3,9 @@
 // surface (`apex_rounding`, §3.6), on the same trial strains. The states are drawn once: plastic
 // trial states along the cone (the bulk of a plastic zone) and beyond the apex (the points at a
 // free surface, where the rounded return may fall back to continuation). Each benchmark updates
-// all of them; the time per update is the reported time / states.
-//
-//   build/bench/bench_material_return --benchmark_repetitions=5 \
-//       --benchmark_report_aggregates_only=true
+// all of them; the time per update is the reported time / states (counter `states`).
+// bench/run_benchmarks.sh runs it (5 repetitions) and bench/material_return_table.py puts the
+// medians into docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Geometry>
@@ -58,6 +57,7 @@ void update_all(benchmark::State& state, double rounding, double mean, double sp
       benchmark::DoNotOptimize(out.kirchhoff);
     }
   state.SetItemsProcessed(state.iterations() * states);
+  state.counters["states"] = states;
 }
 
 BENCHMARK_CAPTURE(update_all, cone_along, 0.0, -100.0, 80.0)->Unit(benchmark::kMicrosecond);

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds bench_step, runs it and writes docs/performance.md from its JSON output.
+# Builds bench_step and bench_material_return, runs them and writes docs/performance.md from their
+# JSON output.
 #
 #   BUILD_DIR=build bench/run_benchmarks.sh
 #
@@ -36,7 +37,7 @@ commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 if [[ -n "$(git -C "$root" status --porcelain -- src 2>/dev/null)" ]]; then
   commit="$commit (src/ modified)"
 fi
-cmake --build "$build" --target bench_step -j"$(nproc)"
+cmake --build "$build" --target bench_step bench_material_return -j"$(nproc)"
 
 mkdir -p "$results"
 json="$results/bench_step.json"
@@ -44,6 +45,13 @@ start=$(date +%s)
 "$build/bench/bench_step" --benchmark_out="$json" --benchmark_out_format=json \
   | tee "$results/bench_step.txt"
 end=$(date +%s)
+# One stress update of the cone against the rounded surface (performance note 12): its table
+# goes into the doc through the notes.
+"$build/bench/bench_material_return" --benchmark_repetitions="${GEOMPM_BENCH_REPETITIONS:-5}" \
+  --benchmark_report_aggregates_only=true --benchmark_out="$results/bench_material_return.json" \
+  --benchmark_out_format=json | tee "$results/bench_material_return.txt"
+/usr/bin/python3 "$root/bench/material_return_table.py" "$results/bench_material_return.json" \
+  "$root/bench/material_return_timings.md"
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 /usr/bin/python3 "$root/bench/make_performance_doc.py" "$json" "$doc" \

@@ -605,6 +605,8 @@ def stop_reason(r, detail=False):
     """Why a run stopped early, in short; `detail`: with Newton's own words for a failed step."""
     if "volume" in r.summary:
         return "a point's volume became ≤ 0"
+    if "stress update did not converge" in r.summary:
+        return "a point's stress update did not converge"
     if "smallest allowed time step" in r.summary or "converge" in r.summary:
         # "...the smallest allowed time step (dt): <Newton's failure>. Results up to ..."
         reason = re.search(r"time step \([^)]*\): (.*?)\. Results up to", r.summary)

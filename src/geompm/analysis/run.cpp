@@ -63,25 +63,31 @@ class OutputWriter {
         newton_(dir / "newton.csv",
                 {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
                  "converged", "largest_residual_node", "largest_residual_unknown", "tangent_error",
-                 "plastic_points", "plastic_changes"}) {}
+                 "plastic_points", "plastic_changes", "largest_correction_node",
+                 "largest_correction_unknown"}) {}
 
   /// Every Newton attempt, converged or cut back: one row per iteration, with where the
   /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation),
   /// with `newton.tangent_check`, the tangent's error along the correction that follows (0 when
   /// the check is off or no correction followed), and the points returned plastically with
   /// how many switched between elastic and plastic since the iterate before (-1 at an attempt's
-  /// first iterate).
+  /// first iterate), and the unknown the correction that led to the iterate moved most (node -1
+  /// at an attempt's first iterate).
   void newton_log(int step_number, double time, double dt, const StepResult& step) {
     const NewtonResult& newton = step.newton;
     for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
       const UnknownAt at =
           k < step.largest_residual.size() ? step.largest_residual[k] : UnknownAt{};
+      const UnknownAt moved = k > 0 && k - 1 < step.largest_correction.size()
+                                  ? step.largest_correction[k - 1]
+                                  : UnknownAt{};
       newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
                       k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
                       newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
                       k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0,
                       k < newton.active.size() ? double(newton.active[k].size) : -1.0,
-                      k < newton.active.size() ? double(newton.active[k].changed) : -1.0});
+                      k < newton.active.size() ? double(newton.active[k].changed) : -1.0,
+                      double(moved.node), double(moved.unknown)});
     }
   }
 

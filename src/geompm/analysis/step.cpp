@@ -56,6 +56,10 @@ class LagrangianProblem final : public NonlinearProblem {
     // Positions of the diagonal entries, to add the inertia term M / (beta dt^2).
     const SparseMatrix& pattern = grid.pattern();
     diagonal_.resize(pattern.cols());
+    const auto& free = grid.free_index();
+    grid_dof_.assign(pattern.cols(), -1);
+    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
+      if (free[d] >= 0) grid_dof_[free[d]] = d;
     for (Index j = 0; j < pattern.cols(); ++j)
       for (int at = pattern.outerIndexPtr()[j]; at < pattern.outerIndexPtr()[j + 1]; ++at)
         if (pattern.innerIndexPtr()[at] == j) diagonal_[j] = at;
@@ -127,7 +131,13 @@ class LagrangianProblem final : public NonlinearProblem {
   /// The grid unknown with the largest out-of-balance force at the last admissible evaluation
   /// (-1 if the last evaluation turned a point inside out), and that force.
   Index largest_residual_unknown() const override { return largest_dof_; }
+  Index problem_unknown(Index free) const override { return grid_dof_[free]; }
   double largest_residual_value() const { return largest_value_; }
+  std::string inadmissible_reason() const override {
+    return grid_.inadmissible_by_stress_update()
+               ? "inadmissible stress (a point's stress update did not converge)"
+               : NonlinearProblem::inadmissible_reason();
+  }
   const Vector& inertia() const { return inertia_; }
 
  private:
@@ -144,6 +154,7 @@ class LagrangianProblem final : public NonlinearProblem {
   bool dynamic_;
   Newmark newmark_;
   std::vector<int> diagonal_;
+  std::vector<Index> grid_dof_;  // free unknown -> grid dof (inverse of grid.free_index())
   Vector f_int_, inertia_;
   Index largest_dof_ = -1;
   double largest_value_ = 0.0;
@@ -350,17 +361,18 @@ void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepR
 }
 
 namespace {
-// `later` with `earlier` in front, `earlier` padded with zeros to `size` entries.
+// `later` with `earlier` in front, `earlier` padded with `pad` to `size` entries.
 template <typename T>
-void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t size) {
-  if (earlier.size() < size) earlier.resize(size, T{});
+void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t size, T pad = T{}) {
+  if (earlier.size() < size) earlier.resize(size, pad);
   earlier.insert(earlier.end(), later.begin(), later.end());
   later = std::move(earlier);
 }
 
 // A Newton solve that followed a failed one in the same step, with the failed one's iterations
 // in front: the counts include both, and the log (newton.csv) shows both in turn. The log pairs
-// residual k with corrections[k - 1] (the correction that led to it) and tangent_errors[k], so
+// residual k with corrections[k - 1] and largest_correction[k - 1] (the correction that led to
+// it) and tangent_errors[k], so
 // those are padded to the failed attempt's residuals (a zero where the second attempt starts). A
 // failed attempt that ended on an inadmissible iterate has one correction more than it logged
 // residuals after the first (the one that led there): it is dropped, so that the second attempt's
@@ -375,6 +387,9 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   std::vector<double> corrections = failed.corrections;
   corrections.resize(std::min(corrections.size(), n > 0 ? n - 1 : 0));
   put_in_front(second.corrections, std::move(corrections), n);
+  std::vector<Index> moved_most = failed.largest_correction;
+  moved_most.resize(std::min(moved_most.size(), n > 0 ? n - 1 : 0));
+  put_in_front(second.largest_correction, std::move(moved_most), n, Index{-1});
   if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
     put_in_front(second.tangent_errors, failed.tangent_errors, n);
   return second;
@@ -492,6 +507,8 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   }
   for (const Index dof : result.newton.largest)
     result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
+  for (const Index dof : result.newton.largest_correction)
+    result.largest_correction.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
   if (!result.newton.converged) {
     if (const Index p = grid_.inadmissible_point();
         result.newton.inadmissible && p >= 0 && p < points.size()) {

@@ -28,6 +28,8 @@ struct StepResult {
   NewtonResult newton;
   /// Per entry of newton.residuals: the unknown with the largest residual (newton.csv).
   std::vector<UnknownAt> largest_residual;
+  /// Per entry of newton.corrections: the unknown the correction moved most (newton.csv).
+  std::vector<UnknownAt> largest_correction;
   // Grid solution of the converged step (dof-indexed over grid.active_nodes()).
   Vector displacement, velocity, acceleration;
   Vector reaction;                    // f_int + M a - f_ext, non-zero at constrained dofs

@@ -132,6 +132,9 @@ PrincipalReturn return_to_hyperbolic_surface(const Vec3& trial_strain, const Mat
         ds *= 0.5;
       }
     }
+    // The continuation stalled short of the trial state: what it holds is the return of another
+    // trial state, so it is reported as a failure rather than used.
+    out.converged = s >= 1;
   }
   const HyperbolicSurface::Derivatives f = yield.derivatives(tau), g = potential.derivatives(tau);
   out.active = 1;

@@ -12,6 +12,8 @@ namespace geompm {
 /// The return of principal trial strains sorted eps_1 >= eps_2 >= eps_3 to the surface `yield`
 /// with flow from `potential` (both of the form of hyperbolic_surface.hpp). Elastic when
 /// F(tau_tr) <= 0; `active` is 1 for a plastic return. The stresses keep the trial strains' order.
+/// `converged` is false if neither Newton's method nor the continuation reached the solution
+/// (a non-finite trial state, say): the result must then not be used.
 PrincipalReturn return_to_hyperbolic_surface(const Vec3& trial_strain, const Mat3& elasticity,
                                              const HyperbolicSurface& yield,
                                              const HyperbolicSurface& potential,

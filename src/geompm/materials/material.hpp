@@ -25,6 +25,9 @@ struct StressUpdate {
   Mat3 elastic_strain;  // 1/2 ln(b_e) after the update (= eps_tr when elastic)
   InternalVariables internal{};
   Tensor4 tangent;  // d tau / d eps_tr, index (3i+j, 3k+l)
+  // False if the update could not be computed (an iterative return that did not converge):
+  // the point's state is then inadmissible and Newton cuts the step back.
+  bool converged = true;
 };
 
 /// Elastic moduli of a point, for the mixed formulation's weights (docs/theory.md §11).

@@ -166,6 +166,7 @@ void MohrCoulomb::update(const Mat3& eps, const InternalVariables& internal_n,
   out.internal = internal_n;
   const SymmetricEigen trial = principal_descending(eps);
   const PrincipalReturn r = principal_return(trial.values, internal_n);
+  out.converged = r.converged;
   if (r.active == 0) {
     // Elastic (docs/theory.md §3.3): the trial state, with its tangent in closed form.
     out.kirchhoff = lambda_ * eps.trace() * Mat3::Identity() + 2.0 * mu_ * eps;

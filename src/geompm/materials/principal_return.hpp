@@ -40,6 +40,9 @@ struct PrincipalReturn {
   Vec3 plastic_strain = Vec3::Zero();  // increment of the principal plastic strains
   Mat3 tangent = Mat3::Zero();         // C_ab = d tau_a / d eps_trial_b
   unsigned active = 0;                 // bit k set: plane k is active; 0: elastic
+  // False if an iterative return (hyperbolic_return.hpp) did not converge: the stress is then
+  // not a solution of the return, and the caller must not use it (the step is cut back).
+  bool converged = true;
 };
 
 /// The principal values of a symmetric matrix in descending order (tau_1 >= tau_2 >= tau_3 for

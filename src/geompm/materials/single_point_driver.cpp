@@ -49,6 +49,11 @@ SinglePointDriver::SinglePointDriver(const Material& material, const InternalVar
 void SinglePointDriver::evaluate(const Mat3& strain_increment, DriverState& out) const {
   StressUpdate u;
   material_.update(state_.elastic_strain + strain_increment, state_.internal, u);
+  if (!u.converged)
+    throw RunError(
+        fmt::format("single-point driver: the material's stress update (its return "
+                    "mapping) did not converge, at a trial strain of norm {:g}",
+                    (state_.elastic_strain + strain_increment).norm()));
   out.strain = state_.strain + strain_increment;
   out.elastic_strain = u.elastic_strain;
   out.stress = u.kirchhoff;

@@ -8,6 +8,7 @@ namespace geompm {
 bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& F_n,
                           const Mat3& be_n, const InternalVariables& internal_n, bool want_tangent,
                           FiniteStrainState& out, const int* components, int count) {
+  out.stress_update_failed = false;
   const double dJ = dF.determinant();
   if (!(dJ > 0.0) || !std::isfinite(dJ)) return false;
 
@@ -23,6 +24,10 @@ bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& 
 
   StressUpdate update;
   material.update(trial_strain, internal_n, update);
+  if (!update.converged) {
+    out.stress_update_failed = true;
+    return false;
+  }
   out.cauchy_stress = update.kirchhoff / out.jacobian;
   out.internal = update.internal;
   out.plastic = !(update.elastic_strain == trial_strain);

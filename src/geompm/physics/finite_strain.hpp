@@ -25,13 +25,17 @@ struct FiniteStrainState {
   // The return mapping moved the trial state back to the yield surface (the point flows
   // plastically in this iterate); false for an elastic update.
   bool plastic = false;
+  // The material could not update the stress (StressUpdate::converged false): why
+  // finite_strain_update returned false, if it did after reaching the material.
+  bool stress_update_failed = false;
   // a above (only when requested), restricted to the requested components: entry (c, d) is
   // a_{ij kl} with (i, j) the c-th and (k, l) the d-th requested pair (all nine in natural
   // order by default).
   Tensor4 spatial_tangent;
 };
 
-/// Updates one point. Returns false if dF is not invertible with det > 0 (the step is cut back).
+/// Updates one point. Returns false if dF is not invertible with det > 0, or if the material's
+/// update failed (`stress_update_failed`): the step is cut back.
 /// `components` (pair indices 3i+j, `count` of them) limits the tangent to the components the
 /// caller can use: five in 2D, where only xx, xy, yx, yy, zz of a gradient are non-zero.
 bool finite_strain_update(const Material& material, const Mat3& dF, const Mat3& F_n,

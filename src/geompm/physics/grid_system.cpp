@@ -522,9 +522,12 @@ PointStartState GridSystem::start_state(const MaterialPoints& points, Index p) c
           points.volume_mismatch[p]};
 }
 
-void GridSystem::note_inadmissible(Index p) const {
+void GridSystem::note_inadmissible(Index p, bool stress_update_failed) const {
 #pragma omp critical(geompm_inadmissible_point)
-  if (inadmissible_point_ < 0 || p < inadmissible_point_) inadmissible_point_ = p;
+  if (inadmissible_point_ < 0 || p < inadmissible_point_) {
+    inadmissible_point_ = p;
+    inadmissible_by_stress_update_ = stress_update_failed;
+  }
 }
 
 bool GridSystem::internal_force(const MaterialPoints& points, const Vector& du, Vector& f_int,
@@ -765,7 +768,8 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
           }
         }
         if (!ok) {
-          note_inadmissible(p);
+          note_inadmissible(p, Mixed && is_mixed(points, p) ? rm.u.state.stress_update_failed
+                                                            : r.state.stress_update_failed);
           admissible = false;
           continue;
         }
@@ -989,7 +993,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
                                    rm, averaged ? &average : nullptr,
                                    settings_.mixed_field_pressure,
                                    settings_.mixed_incremental_pressure)) {
-          note_inadmissible(p);
+          note_inadmissible(p, rm.u.state.stress_update_failed);
           return false;
         }
         const double s_p = pressure_scale_;
@@ -1003,7 +1007,7 @@ bool GridSystem::wide_stencil_point_forces(const MaterialPoints& points, const V
       } else {
         if (!integrate_point(s, start, du_local, axisymmetric, tangent != nullptr, r,
                              averaged ? &average : nullptr)) {
-          note_inadmissible(p);
+          note_inadmissible(p, r.state.stress_update_failed);
           return false;
         }
         f_local = r.internal_force;

@@ -123,6 +123,9 @@ class GridSystem {
   /// After internal_force returned false: the (lowest-numbered) point whose deformation was
   /// inadmissible, or -1 (for the failure message).
   Index inadmissible_point() const { return inadmissible_point_; }
+  /// Whether that point failed in its material's stress update (a return mapping that did not
+  /// converge) rather than by a volume <= 0.
+  bool inadmissible_by_stress_update() const { return inadmissible_by_stress_update_; }
 
   /// Writes into `points` the state the internal force computes at `du` (stress, F, b_e,
   /// internal variables, volume): one more evaluation, without the tangent, instead of keeping
@@ -301,7 +304,8 @@ class GridSystem {
   bool averaging_ = false;  // some material takes its cell's volume average (theory §12)
   // See inadmissible_point(); diagnostic state, written by const assembly helpers too.
   mutable Index inadmissible_point_ = -1;
-  void note_inadmissible(Index p) const;
+  mutable bool inadmissible_by_stress_update_ = false;
+  void note_inadmissible(Index p, bool stress_update_failed = false) const;
 
   // Mixed p-u (docs/theory.md §11).
   bool mixed_ = false;

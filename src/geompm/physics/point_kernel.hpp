@@ -149,7 +149,8 @@ Eigen::Matrix<double, 1, KernelResult<NS, Dim>::n> divergence_operator(
 /// operator B. With a cell's volume average, the material sees dF^ = (dJ^ / j)^(1/dim) dF on the
 /// grid's directions, j their volume ratio (F-bar, theory eq. 12.2), while B and the volume of the
 /// forces are those of dF itself. Returns false if the point's deformation is inadmissible (det dF
-/// <= 0): Newton then cuts the step back. Shared by the displacement and the mixed kernels.
+/// <= 0) or its material's update failed (out.state.stress_update_failed): Newton then cuts the
+/// step back. Shared by the displacement and the mixed kernels.
 template <int NS, int Dim>
 bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
                   const Eigen::Matrix<double, NS, Dim>& du, bool axisymmetric, bool want_tangent,
@@ -158,6 +159,7 @@ bool deform_point(const Stencil<NS, Dim>& s, const PointStartState& p,
   using GC = GradientComponents<Dim>;
   constexpr int nc = GC::count;
   double radius = 0.0;
+  out.state.stress_update_failed = false;
   const Mat3 dF = incremental_deformation_gradient(s, p, du, axisymmetric, radius);
   const double dJ = dF.determinant();
   if (!(dJ > 0.0)) return false;

@@ -55,7 +55,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     }
     halvings = 0;
     if (!admissible) {
-      result.failure = "inadmissible deformation (a point's volume became <= 0)";
+      result.failure = problem.inadmissible_reason();
       result.inadmissible = true;
       return result;
     }
@@ -120,6 +120,9 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       const double scale = problem.increment_norm(x);
       last_correction = scale > 0 ? dx.norm() / scale : 0.0;
       result.corrections.push_back(last_correction);
+      Index moved_most = 0;
+      dx.cwiseAbs().maxCoeff(&moved_most);
+      result.largest_correction.push_back(problem.problem_unknown(moved_most));
     } catch (const LinearSolverFailure& e) {
       result.failure = e.what();
       return result;

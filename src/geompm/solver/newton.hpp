@@ -24,14 +24,22 @@ class NonlinearProblem {
   virtual ~NonlinearProblem() = default;
   /// Residual R(x) (out-of-balance force at the free unknowns), a force scale for the relative
   /// criterion, and the tangent K = -dR/dx when `tangent` is not null (its pattern fixed for the
-  /// step). Returns false if x is inadmissible (a point turned inside out).
+  /// step). Returns false if x is inadmissible (a point turned inside out, or its stress update
+  /// failed).
   virtual bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                         SparseMatrix* tangent) = 0;
+  /// After evaluate() returned false: why, for the failure message.
+  virtual std::string inadmissible_reason() const {
+    return "inadmissible deformation (a point's volume became <= 0)";
+  }
   /// Norm of the whole increment of the step at x (prescribed parts included).
   virtual double increment_norm(const Vector& x) const = 0;
   /// The unknown with the largest residual at the last evaluation, in the problem's own
   /// numbering, or -1 if the problem does not say (for diagnostics only).
   virtual Index largest_residual_unknown() const { return -1; }
+  /// The free unknown `free` (an index into x) in the problem's own numbering, as
+  /// largest_residual_unknown() (for diagnostics only).
+  virtual Index problem_unknown(Index free) const { return free; }
   /// For diagnostics: the size of the active set of the last evaluation (in plasticity the
   /// points returned plastically) and how many members entered or left it since the last call
   /// (-1 if the problem does not say; Newton sets -1 at a solve's first iterate). Called once
@@ -76,12 +84,14 @@ struct NewtonResult {
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()
-  std::vector<ActiveSet> active;    // per residual: the problem's active_set()
+  /// Per correction: the unknown it moves most (its largest |dx_i|, as problem_unknown(i)).
+  std::vector<Index> largest_correction;
+  std::vector<ActiveSet> active;  // per residual: the problem's active_set()
   /// With NewtonSettings::tangent_check, per correction: |(R(x + e dx) - R(x)) / e + R(x)| /
   /// |R(x)|, the tangent's relative error along dx (NaN where x + e dx was inadmissible).
   std::vector<double> tangent_errors;
   std::string failure;        // why it did not converge
-  bool inadmissible = false;  // it stopped because x turned a point inside out
+  bool inadmissible = false;  // it stopped at an inadmissible x (inadmissible_reason())
 };
 
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,

@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <map>
+#include <memory>
 #include <random>
 
 #include "geompm/boundary/rigid_footing.hpp"
@@ -337,6 +338,65 @@ TEST(GridSystemInadmissible, NamesTheLowestPointThatTurnedInsideOut) {
     du(static_cast<Index>(a) * dim) = -3.0 * model->mesh.nodes[grid.active_nodes()[a]].x();
   EXPECT_FALSE(grid.internal_force(model->points, du, f, nullptr));
   EXPECT_EQ(grid.inadmissible_point(), 0);
+}
+
+// A material whose stress update fails (as a return mapping that does not converge,
+// StressUpdate::converged) beyond a trial strain of norm `limit`, and is the wrapped one's below.
+class FailingBeyond final : public Material {
+ public:
+  FailingBeyond(const Material& inner, double limit) : inner_(inner), limit_(limit) {}
+  void update(const Mat3& eps, const InternalVariables& internal_n,
+              StressUpdate& out) const override {
+    inner_.update(eps, internal_n, out);
+    if (eps.norm() > limit_) out.converged = false;
+  }
+  double density() const override { return inner_.density(); }
+  double reference_modulus() const override { return inner_.reference_modulus(); }
+  ElasticModuli elastic_moduli(const InternalVariables& internal) const override {
+    return inner_.elastic_moduli(internal);
+  }
+  double strain_energy(const Mat3& eps) const override { return inner_.strain_energy(eps); }
+  const char* model_name() const override { return "failing"; }
+
+ private:
+  const Material& inner_;
+  double limit_;
+};
+
+// A point whose stress update fails makes the step inadmissible as a point turned inside out does
+// (Newton cuts the step back), and the grid says which of the two it was, for the message; the
+// same point with its update within reach is admissible, so the check can fail.
+TEST(GridSystemInadmissible, SaysWhenAPointsStressUpdateFailed) {
+  auto spec = testing::read_example("oedometer/oedometer.yaml");
+  auto model = build_model(spec);
+  std::vector<std::unique_ptr<Material>> failing;
+  std::vector<const Material*> materials;
+  for (const Material* m : model->material_pointers()) {
+    failing.push_back(std::make_unique<FailingBeyond>(*m, 1e-3));
+    materials.push_back(failing.back().get());
+  }
+  GridSettings settings;
+  settings.kinematics = spec.kinematics;
+  GridSystem grid(model->mesh, model->topology, materials, settings);
+  grid.initialise(model->points);
+  grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+  const int dim = grid.dim();
+  Vector du = Vector::Zero(grid.num_dofs()), f;
+  const auto stretch = [&](double rate) {
+    for (std::size_t a = 0; a < grid.active_nodes().size(); ++a)
+      du(static_cast<Index>(a) * dim) = rate * model->mesh.nodes[grid.active_nodes()[a]].x();
+  };
+  stretch(1e-4);  // eps_xx ~ 1e-4 at every point: within the limit
+  EXPECT_TRUE(grid.internal_force(model->points, du, f, nullptr));
+  EXPECT_EQ(grid.inadmissible_point(), -1);
+  stretch(1e-2);  // eps_xx ~ 1e-2: every point's update fails, no volume is lost
+  EXPECT_FALSE(grid.internal_force(model->points, du, f, nullptr));
+  EXPECT_EQ(grid.inadmissible_point(), 0);
+  EXPECT_TRUE(grid.inadmissible_by_stress_update());
+  stretch(-3.0);  // det dF < 0 before the material is reached
+  EXPECT_FALSE(grid.internal_force(model->points, du, f, nullptr));
+  EXPECT_EQ(grid.inadmissible_point(), 0);
+  EXPECT_FALSE(grid.inadmissible_by_stress_update());
 }
 
 // The cell-averaged volume change (F-bar, docs/theory.md eqs. 12.1-12.3), of mixed or displacement

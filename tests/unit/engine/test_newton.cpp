@@ -1,10 +1,12 @@
 // Newton's backtracking (docs/theory.md §4.4) on R(x) = -atan(x), the classic case where plain
 // Newton from |x0| > 1.39 overshoots further each iteration and diverges, while halving an
 // overshooting correction brings it into the quadratic basin around the root x = 0; and the
-// tangent check (newton.tangent_check), which must tell a consistent tangent from a wrong one.
+// tangent check (newton.tangent_check), which must tell a consistent tangent from a wrong one; an
+// inadmissible iterate stops Newton with the problem's own reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "geompm/solver/newton.hpp"
 
@@ -13,9 +15,11 @@ namespace {
 
 class Arctangent final : public NonlinearProblem {
  public:
-  explicit Arctangent(double tangent_factor = 1.0) : tangent_factor_(tangent_factor) {}
+  explicit Arctangent(double tangent_factor = 1.0, double admissible_up_to = HUGE_VAL)
+      : tangent_factor_(tangent_factor), admissible_up_to_(admissible_up_to) {}
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                 SparseMatrix* tangent) override {
+    if (std::abs(x(0)) > admissible_up_to_) return false;
     residual = Vector::Constant(1, -std::atan(x(0)));
     force_scale = 1.0;
     if (tangent) {
@@ -25,9 +29,11 @@ class Arctangent final : public NonlinearProblem {
     return true;
   }
   double increment_norm(const Vector& x) const override { return std::max(std::abs(x(0)), 1.0); }
+  std::string inadmissible_reason() const override { return "beyond the admissible range"; }
 
  private:
   double tangent_factor_;
+  double admissible_up_to_;
 };
 
 // Newton on the arctangent from x0 with a tangent `tangent_factor` times the consistent one.
@@ -66,6 +72,26 @@ TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
   EXPECT_NEAR(x(0), 0.0, 1e-12);
   EXPECT_GT(result.halvings, 0);
   EXPECT_LT(result.iterations, 15);
+}
+
+// Plain Newton from x0 = 2 jumps to x1 = 2 - atan(2) (1 + 4) = -3.54: beyond |x| <= 3 the problem
+// refuses the iterate, and Newton stops there in the problem's words (the engine's: a point
+// turned inside out, or its stress update failed); with |x| <= 4 the same iterate is evaluated.
+TEST(NewtonInadmissible, StopsWithTheProblemsReason) {
+  Arctangent problem(1.0, 3.0);
+  auto solver = create_linear_solver("sparse_lu");
+  Vector x = Vector::Constant(1, 2.0);
+  SparseMatrix tangent;
+  const NewtonResult refused = solve_newton(problem, *solver, settings_to(1e-12, 30), x, tangent);
+  EXPECT_FALSE(refused.converged);
+  EXPECT_TRUE(refused.inadmissible);
+  EXPECT_EQ(refused.failure, "beyond the admissible range");
+  EXPECT_EQ(refused.iterations, 1);
+  Arctangent wider(1.0, 4.0);
+  x = Vector::Constant(1, 2.0);
+  const NewtonResult diverged = solve_newton(wider, *solver, settings_to(1e-12, 1), x, tangent);
+  EXPECT_FALSE(diverged.inadmissible);
+  EXPECT_NEAR(x(0), 2.0 - std::atan(2.0) * 5.0, 1e-12);
 }
 
 NewtonResult solve_checked(double tangent_factor, Vector& x) {

@@ -5,10 +5,11 @@
 // flow along the potential's gradient for any trial state, keeps the principal order, its
 // tangent is the derivative of the update everywhere, a hydrostatic trial state in tension
 // returns to the tip with shear stiffness left (the sharp apex has none), far from the apex it
-// is the cone's return, and bad parameters are refused.
+// is the cone's return, a return that cannot be solved says so, and bad parameters are refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -155,6 +156,7 @@ TEST(RoundedMohrCoulomb, ReturnsToTheSurfaceAlongThePotentialsGradient) {
       const double tol = 1e-9 * std::max(trial.cwiseAbs().maxCoeff(), cs.c);
       SCOPED_TRACE(::testing::Message() << "phi " << cs.phi << " psi " << cs.psi << " a " << cs.a
                                         << " trial " << trial.transpose());
+      EXPECT_TRUE(r.converged);
       EXPECT_LE(f.value(r.stress), tol);
       const std::optional<Vec3> plastic_or_none = checked_plastic_strain(r, trial, de, tol);
       if (!plastic_or_none) continue;
@@ -233,6 +235,23 @@ TEST(RoundedMohrCoulomb, FarFromTheApexTheReturnIsTheCones) {
     const double sf = std::sin(radians(cs.phi));
     EXPECT_LT((a.stress - b.stress).norm(), 10 * cs.a * cs.a * sf / std::abs(p));
   }
+}
+
+// Where neither Newton's method nor the continuation reaches a solution (here a non-finite trial
+// state) the return says so instead of handing back the nearest iterate, and the update passes it
+// on (the engine then cuts the step back); the hydrostatic tension of the test above converges.
+TEST(RoundedMohrCoulomb, AReturnThatCannotBeSolvedIsReportedNotUsed) {
+  const Case cs = cases[3];
+  const MohrCoulomb soil = make_rounded(cs);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(soil.principal_return(Vec3(nan, 0, -1e-3), {}).converged);
+  StressUpdate out;
+  Mat3 eps = Mat3::Zero();
+  eps(0, 0) = nan;
+  soil.update(eps, {}, out);
+  EXPECT_FALSE(out.converged);
+  soil.update(Mat3::Identity() * 10 * cs.c / E, {}, out);
+  EXPECT_TRUE(out.converged);
 }
 
 TEST(RoundedMohrCoulomb, BadRoundingIsRefusedNamingTheKey) {
