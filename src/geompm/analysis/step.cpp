@@ -490,14 +490,18 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   // elastic and plastic in the iterations. Where that start fails (an inadmissible iterate, or
   // Newton cycling between the plastic states of a few points), the step is solved again from
   // zero, whose first iterate is elastic, before it is cut back; both attempts are counted.
-  // The extrapolated start gets half of the iterations, and more only while it converges
+  // The extrapolated start gets half of the iterations (or `extrapolated_patience`, where the zero
+  // start is the worse bet: theory §4.5), and more only while it converges
   // superlinearly (each residual a tenth of the one before or less): one that has not reached
   // Newton's quadratic regime by then is not the quick start it is meant to be, and the zero
   // start still gets all of them; one that has would throw away an almost converged iterate.
   Vector x = Vector::Zero(grid_.num_free());
   const bool extrapolated = phase.spec->newton.extrapolate && extrapolated_start(dt, x);
   NewtonSettings first = settings;
-  if (extrapolated) first.patience = std::max(1, settings.max_iterations / 2);
+  if (extrapolated) {
+    const int patience = phase.spec->newton.extrapolated_patience;
+    first.patience = patience > 0 ? patience : std::max(1, settings.max_iterations / 2);
+  }
   result.newton = solve_newton(problem, solver_, first, x, grid_.tangent_storage());
   if (extrapolated && !result.newton.converged) {
     x.setZero();

@@ -87,7 +87,7 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
 spec::Newton read_newton(const yaml::Node& node) {
   const yaml::Map section =
       node.map({"max_iterations", "residual_tolerance", "displacement_tolerance", "line_search",
-                "tangent_check", "predictor"});
+                "tangent_check", "predictor", "extrapolated_patience"});
   spec::Newton newton;
   if (auto iterations = section.find("max_iterations")) {
     newton.max_iterations = iterations->integer();
@@ -117,6 +117,16 @@ spec::Newton read_newton(const yaml::Node& node) {
   }
   if (auto predictor = section.find("predictor"))
     newton.extrapolate = predictor->choice({"zero", "extrapolated"}) == "extrapolated";
+  if (auto patience = section.find("extrapolated_patience")) {
+    if (!newton.extrapolate)
+      patience->fail(
+          "extrapolated_patience applies to the extrapolated start only: add "
+          "'predictor: extrapolated' or remove it");
+    newton.extrapolated_patience = patience->integer();
+    if (newton.extrapolated_patience < 1)
+      patience->fail(fmt::format("expected a whole number >= 1 (Newton iterations), found {}",
+                                 newton.extrapolated_patience));
+  }
   return newton;
 }
 

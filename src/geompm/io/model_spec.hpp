@@ -174,6 +174,10 @@ struct Newton {
   // Newton's first iterate: a zero increment, or the last converged step's increment scaled to
   // this step's length (linear extrapolation of the path).
   bool extrapolate = false;
+  // With the extrapolated start: the iterations after which it goes on only while converging
+  // superlinearly (docs/theory.md §4.5); 0: half of max_iterations; max_iterations or more: it may
+  // use them all.
+  int extrapolated_patience = 0;
 };
 
 struct Dynamics {

@@ -62,7 +62,9 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
       kLoadingModel + "numerics: {mixed_volume: per_point, mixed_material_pressure: field}\n";
   const std::string step = "    time_step: 0.1\n";
   text.replace(text.find(step), step.size(),
-               step + "    newton: {line_search: 4, predictor: extrapolated}\n");
+               step +
+                   "    newton: {line_search: 4, predictor: extrapolated, "
+                   "extrapolated_patience: 20}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_FALSE(model.numerics.mixed_volume_average);
   EXPECT_TRUE(model.numerics.mixed_field_pressure);
@@ -71,6 +73,8 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
   EXPECT_TRUE(model.phases.at(1).newton.extrapolate);
   EXPECT_FALSE(model.phases.at(0).newton.extrapolate);
+  EXPECT_EQ(model.phases.at(1).newton.extrapolated_patience, 20);
+  EXPECT_EQ(model.phases.at(0).newton.extrapolated_patience, 0);  // half of max_iterations
   const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
   EXPECT_TRUE(defaults.numerics.mixed_volume_average);
   EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
@@ -347,6 +351,17 @@ const std::vector<LoadingCase> kLoadingCases = {
      "newton: {predictor: linear}",
      "phases[1].newton.predictor",
      "expected one of: zero, extrapolated"},
+    {"extrapolated_patience_without_the_extrapolated_start",
+     {{"    time_step: 0.1\n", "    time_step: 0.1\n    newton: {extrapolated_patience: 5}\n"}},
+     "newton: {extrapolated_patience: 5}",
+     "phases[1].newton.extrapolated_patience",
+     "applies to the extrapolated start only"},
+    {"extrapolated_patience_zero",
+     {{"    time_step: 0.1\n",
+       "    time_step: 0.1\n    newton: {predictor: extrapolated, extrapolated_patience: 0}\n"}},
+     "extrapolated_patience: 0",
+     "phases[1].newton.extrapolated_patience",
+     "expected a whole number >= 1"},
     {"mixed_volume_unknown",
      {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
        "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
