@@ -201,7 +201,7 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   // other runs'). The cohesion adds 2 c N_c / (gamma B) = 0.30 to N_gamma by superposition
   // (N_c = 30.14 at phi = 30 deg, Prandtl), so the reference is Martin's 14.75 + 0.30 = 15.05
   // (§11 measures the cohesion's part at about twice that: the reference is a lower one). Measured
-  // (§11): 24.06 on h = B/10, 18.32 on h = B/40, extrapolated about 12 % above the reference. The
+  // (§11): 24.06 on h = B/10, 18.32 on h = B/40, 17.29 on B/80, extrapolated 5.4 % above it. The
   // extrapolated start keeps all of its iterations (`extrapolated_patience: 20`, as in §11): the
   // zero start it would otherwise fall back to is the worse one here (docs/theory.md §4.5).
   const auto text = [](int n) {
