@@ -9,7 +9,7 @@ bench_material_return's JSON output (bench/run_benchmarks.sh runs both).
 import json
 import sys
 
-UNIT_US = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}
+from make_performance_doc import to_ms
 WHERE = {"along": "along the cone (p = −100 kPa, deviators up to 80 kPa)",
          "apex": "around the apex (p = +20 kPa, the apex at 17.3 kPa)"}
 
@@ -29,7 +29,7 @@ def medians(path):
 
 
 def to_us(b):
-    return b["real_time"] * UNIT_US[b["time_unit"]]
+    return 1e3 * to_ms(b["real_time"], b["time_unit"])
 
 
 def main(source, target):

@@ -384,12 +384,13 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);
-  std::vector<double> corrections = failed.corrections;
-  corrections.resize(std::min(corrections.size(), n > 0 ? n - 1 : 0));
-  put_in_front(second.corrections, std::move(corrections), n);
-  std::vector<Index> moved_most = failed.largest_correction;
-  moved_most.resize(std::min(moved_most.size(), n > 0 ? n - 1 : 0));
-  put_in_front(second.largest_correction, std::move(moved_most), n, Index{-1});
+  // Per correction: the failed attempt's logged ones only, padded to its residuals.
+  const auto logged = [n](auto per_correction) {
+    per_correction.resize(std::min(per_correction.size(), n > 0 ? n - 1 : 0));
+    return per_correction;
+  };
+  put_in_front(second.corrections, logged(failed.corrections), n);
+  put_in_front(second.largest_correction, logged(failed.largest_correction), n, Index{-1});
   if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
     put_in_front(second.tangent_errors, failed.tangent_errors, n);
   return second;

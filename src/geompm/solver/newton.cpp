@@ -120,9 +120,10 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       const double scale = problem.increment_norm(x);
       last_correction = scale > 0 ? dx.norm() / scale : 0.0;
       result.corrections.push_back(last_correction);
-      Index moved_most = 0;
-      dx.cwiseAbs().maxCoeff(&moved_most);
-      result.largest_correction.push_back(problem.problem_unknown(moved_most));
+      Index moved_most = -1;
+      if (dx.size() > 0) dx.cwiseAbs().maxCoeff(&moved_most);
+      result.largest_correction.push_back(moved_most >= 0 ? problem.problem_unknown(moved_most)
+                                                          : -1);
     } catch (const LinearSolverFailure& e) {
       result.failure = e.what();
       return result;
