@@ -381,6 +381,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   const std::size_t n = failed.residuals.size();
   second.iterations += failed.iterations;
   second.halvings += failed.halvings;
+  second.searches += failed.searches;
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);
@@ -485,6 +486,7 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
   settings.max_halvings = phase.spec->newton.line_search;
+  settings.energy_search = phase.spec->newton.energy_line_search;
   settings.tangent_check = phase.spec->newton.tangent_check;
   // Newton starts from a zero increment, or from the last step's extrapolated: the plastic zone
   // and its flow are then in place from the first iterate, so fewer points switch between

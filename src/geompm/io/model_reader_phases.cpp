@@ -87,7 +87,7 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
 spec::Newton read_newton(const yaml::Node& node) {
   const yaml::Map section =
       node.map({"max_iterations", "residual_tolerance", "displacement_tolerance", "line_search",
-                "tangent_check", "predictor", "extrapolated_patience"});
+                "energy_line_search", "tangent_check", "predictor", "extrapolated_patience"});
   spec::Newton newton;
   if (auto iterations = section.find("max_iterations")) {
     newton.max_iterations = iterations->integer();
@@ -106,6 +106,15 @@ spec::Newton read_newton(const yaml::Node& node) {
           fmt::format("expected a whole number from 0 to 20 (the most halvings of a "
                       "correction), found {}",
                       newton.line_search));
+  }
+  if (auto search = section.find("energy_line_search")) {
+    newton.energy_line_search = search->number();
+    if (!(newton.energy_line_search >= 0.0 && newton.energy_line_search < 1.0))
+      search->fail(
+          fmt::format("expected a tolerance from 0 (off) up to, not including, 1: the largest "
+                      "|dx . R| a shortened correction may leave, as a fraction of its start; "
+                      "found {}",
+                      newton.energy_line_search));
   }
   if (auto check = section.find("tangent_check")) {
     newton.tangent_check = check->number();

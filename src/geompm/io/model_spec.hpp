@@ -170,7 +170,10 @@ struct Newton {
   double residual_tolerance = 1e-8;      // relative to the force scale
   double displacement_tolerance = 1e-8;  // relative to the step's displacement increment
   int line_search = 0;                   // halvings of an overshooting correction (0: none)
-  double tangent_check = 0.0;            // finite-difference step of the tangent check (0: off)
+  // The energy line search's tolerance on dx . R relative to its start (docs/theory.md §4.4;
+  // 0: off).
+  double energy_line_search = 0.0;
+  double tangent_check = 0.0;  // finite-difference step of the tangent check (0: off)
   // Newton's first iterate: a zero increment, or the last converged step's increment scaled to
   // this step's length (linear extrapolation of the path).
   bool extrapolate = false;

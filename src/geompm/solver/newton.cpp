@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,6 +24,50 @@ double directional_tangent_error(NonlinearProblem& problem, const Vector& x, con
   return norm > 0.0 ? ((perturbed_residual - residual) / e + residual).norm() / norm : 0.0;
 }
 
+// The energy line search's budget of residual evaluations for one correction.
+constexpr int energy_search_evaluations = 10;
+
+// The energy line search (docs/theory.md §4.4, eq. 4.5a; Crisfield 1991, ch. 9): the step length
+// eta along the correction dx from `start` at which the residual is orthogonal to dx,
+// s(eta) = dx . R(start + eta dx) = 0, to within |s| <= tolerance s(0). s(0) = dx . K dx > 0 and
+// the full step gave s(1) < -tolerance s(0): the correction went past the energy's minimum along
+// it. Regula falsi between the two (Illinois: the end kept twice in a row has its s halved),
+// each trial a residual without the tangent; returns the trial eta with the smallest |s|, or 1
+// if none improves on the full step.
+double energy_line_search(NonlinearProblem& problem, const Vector& start, const Vector& dx,
+                          double s_start, double s_full, double tolerance) {
+  double below = 0.0, s_below = s_start, beyond = 1.0, s_beyond = s_full;
+  double best = 1.0, s_best = std::abs(s_full);
+  int kept = 0;  // +1: `below` was moved last, -1: `beyond`
+  Vector residual;
+  double force_scale = 0.0;
+  for (int m = 0; m < energy_search_evaluations; ++m) {
+    const double margin = 0.05 * (beyond - below);
+    const double eta = std::clamp(below + (beyond - below) * s_below / (s_below - s_beyond),
+                                  below + margin, beyond - margin);
+    const bool admissible = problem.evaluate(start + eta * dx, residual, force_scale, nullptr);
+    // An inadmissible trial lies beyond the minimum as far as the search is concerned.
+    const double s = admissible ? dx.dot(residual) : -s_start;
+    if (admissible && std::abs(s) < s_best) {
+      best = eta;
+      s_best = std::abs(s);
+      if (s_best <= tolerance * s_start) break;
+    }
+    if (s > 0.0) {
+      below = eta;
+      s_below = s;
+      if (kept == 1) s_beyond *= 0.5;
+      kept = 1;
+    } else {
+      beyond = eta;
+      s_beyond = s;
+      if (kept == -1) s_below *= 0.5;
+      kept = -1;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
@@ -32,17 +77,43 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
   double force_scale = 0.0;
   double last_correction = 0.0;
   bool analysed = false;
-  int halvings = 0;  // of the current correction
+  int halvings = 0;          // of the current correction
+  bool searched = false;     // the current correction's length came from the energy line search
+  double along_start = 0.0;  // s(0) = dx . R at the iterate the correction started from
   for (int k = 0;; ++k) {
     const bool admissible = problem.evaluate(x, residual, force_scale, &tangent);
     const double norm = admissible ? residual.norm() : 0.0;
     const double relative = norm / std::max(force_scale, 1e-300);
+    // Energy line search: the full correction went past the minimum of the energy along it, as
+    // when a point's returned stress sweeps across a straight side of the yield surface's section
+    // between the iterates (theory §4.4): it is shortened to the length at which the residual is
+    // orthogonal to it, and the iterate there is evaluated again with its tangent.
+    if (k > 0 && settings.energy_search > 0.0 && !searched && halvings == 0 && admissible &&
+        std::isfinite(relative)) {
+      const double along_full = dx.dot(residual);
+      if (along_full < -settings.energy_search * along_start) {
+        searched = true;
+        const Vector start = x - dx;
+        const double eta =
+            energy_line_search(problem, start, dx, along_start, along_full, settings.energy_search);
+        if (eta < 1.0) {
+          dx *= eta;
+          x = start + dx;
+          const double scale = problem.increment_norm(x);
+          last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+          ++result.searches;
+          --k;
+          continue;
+        }
+      }
+    }
     // Backtracking: the correction overshot (the residual grew, or a point turned inside out), so
     // go back half of it. For a small enough fraction the Newton direction reduces the residual;
     // a plastic switch at a few points, which can throw the full correction off, is approached
-    // in shorter strides instead of failing the step.
-    const bool overshot =
-        !admissible || !std::isfinite(relative) || (k > 0 && relative > result.residuals.back());
+    // in shorter strides instead of failing the step. A length the energy line search found
+    // stands unless its iterate is inadmissible.
+    const bool overshot = !admissible || !std::isfinite(relative) ||
+                          (k > 0 && !searched && relative > result.residuals.back());
     if (k > 0 && overshot && halvings < settings.max_halvings) {
       dx *= 0.5;
       x -= dx;
@@ -112,6 +183,8 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       }
       solver.factorize(tangent);
       dx = solver.solve(residual);
+      along_start = dx.dot(residual);
+      searched = false;
       if (settings.tangent_check > 0.0)
         result.tangent_errors.push_back(
             directional_tangent_error(problem, x, dx, residual, settings.tangent_check));

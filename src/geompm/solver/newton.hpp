@@ -71,6 +71,10 @@ struct NewtonSettings {
   /// Backtracking: a correction that makes the residual grow, or turns a point inside out, is
   /// halved, at most this many times in a row (0: plain Newton).
   int max_halvings = 0;
+  /// Energy line search (docs/theory.md §4.4): if > 0, a correction dx after which the residual's
+  /// component along it, s = dx . R, has turned negative beyond this fraction of its value at the
+  /// start is shortened to where |s| is within this fraction (0: off).
+  double energy_search = 0.0;
   /// Diagnostic: if > 0, each correction dx is checked against the residual's directional
   /// finite difference, (R(x + e dx) - R(x)) / e with e this value, which a consistent tangent
   /// K = -dR/dx matches to O(e): K dx = R(x). Costs one more residual evaluation an iteration.
@@ -81,6 +85,7 @@ struct NewtonResult {
   bool converged = false;
   int iterations = 0;               // linear solves
   int halvings = 0;                 // corrections halved by the backtracking
+  int searches = 0;                 // corrections shortened by the energy line search
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()

@@ -2,7 +2,8 @@
 // Newton from |x0| > 1.39 overshoots further each iteration and diverges, while halving an
 // overshooting correction brings it into the quadratic basin around the root x = 0; and the
 // tangent check (newton.tangent_check), which must tell a consistent tangent from a wrong one; an
-// inadmissible iterate stops Newton with the problem's own reason.
+// inadmissible iterate stops Newton with the problem's own reason; the energy line search on a
+// residual with a steep ramp between two soft branches, where plain Newton and backtracking cycle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -60,6 +61,13 @@ NewtonResult solve_from(double x0, int halvings, Vector& x) {
   return solve_arctangent(1.0, settings, x0, x);
 }
 
+// Newton reached the root, with the globalisation under test (its count `used`) taking part.
+void expect_root_found(const NewtonResult& result, const Vector& x, double root, int used) {
+  ASSERT_TRUE(result.converged) << result.failure;
+  EXPECT_NEAR(x(0), root, 1e-12);
+  EXPECT_GT(used, 0);
+}
+
 TEST(NewtonBacktracking, PlainNewtonDivergesOnTheArctangent) {
   Vector x;
   EXPECT_FALSE(solve_from(2.0, 0, x).converged);
@@ -68,9 +76,7 @@ TEST(NewtonBacktracking, PlainNewtonDivergesOnTheArctangent) {
 TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
   Vector x;
   const NewtonResult result = solve_from(2.0, 4, x);
-  ASSERT_TRUE(result.converged) << result.failure;
-  EXPECT_NEAR(x(0), 0.0, 1e-12);
-  EXPECT_GT(result.halvings, 0);
+  expect_root_found(result, x, 0.0, result.halvings);
   EXPECT_LT(result.iterations, 15);
 }
 
@@ -170,6 +176,69 @@ TEST(NewtonPatience, AConvergedResidualIsNotGivenUp) {
   const NewtonResult without = solve_arctangent(1.3, settings, 0.5, x);
   ASSERT_TRUE(without.converged) << without.failure;
   EXPECT_EQ(with.iterations, without.iterations);
+}
+
+// R(x) = f - r(x) with r soft (slope 1) on either side of a steep ramp (slope 1000 over
+// 0 <= x <= 0.01) and f = r(0.005): the root lies on the ramp. It is the force of a point whose
+// returned stress sweeps across a flat face of the yield surface within a small change of its
+// trial state (docs/theory.md §4.4): from either soft branch the tangent sees no ramp, and Newton
+// jumps across it to the other branch and back (x = -1, 5, -4.99, 5, ...: a two-cycle; the
+// residual's norm falls from 6 to 5 and stays at 5 and 4.99, so backtracking, which halves a
+// correction only when the residual grows, cycles too).
+class SteepRamp final : public NonlinearProblem {
+ public:
+  static double force(double x) { return x < 0.0 ? x : x < 0.01 ? 1000.0 * x : 10.0 + (x - 0.01); }
+  bool evaluate(const Vector& x, Vector& residual, double& force_scale,
+                SparseMatrix* tangent) override {
+    residual = Vector::Constant(1, force(0.005) - force(x(0)));
+    force_scale = 1.0;
+    if (tangent) {
+      *tangent = SparseMatrix(1, 1);
+      tangent->insert(0, 0) = x(0) >= 0.0 && x(0) < 0.01 ? 1000.0 : 1.0;
+    }
+    return true;
+  }
+  double increment_norm(const Vector& x) const override { return std::max(std::abs(x(0)), 1.0); }
+};
+
+NewtonResult solve_ramp(double energy_search, int halvings, Vector& x) {
+  SteepRamp problem;
+  auto solver = create_linear_solver("sparse_lu");
+  NewtonSettings settings = settings_to(1e-10, 30);
+  settings.max_halvings = halvings;
+  settings.energy_search = energy_search;
+  x = Vector::Constant(1, -1.0);
+  SparseMatrix tangent;
+  return solve_newton(problem, *solver, settings, x, tangent);
+}
+
+TEST(NewtonEnergySearch, FindsTheRootOnASteepRampWherePlainNewtonAndBacktrackingCycle) {
+  Vector x;
+  const NewtonResult plain = solve_ramp(0.0, 0, x);
+  EXPECT_FALSE(plain.converged);
+  ASSERT_GE(plain.residuals.size(), 5u);
+  EXPECT_NEAR(plain.residuals[3], plain.residuals[5], 1e-9);  // the two-cycle
+  EXPECT_FALSE(solve_ramp(0.0, 6, x).converged);
+  const NewtonResult searched = solve_ramp(0.1, 0, x);
+  expect_root_found(searched, x, 0.005, searched.searches);
+  EXPECT_LE(searched.iterations, 4);
+}
+
+// Where the full correction does not overshoot by more than the tolerance, the search is not
+// entered: on the arctangent from x0 = 0.2 the first correction lands at x1 = -0.0053, where
+// dx . R is -0.027 of its start, and Newton converges as without the search, iterate for iterate.
+// (From x0 = 0.5 it lands at -0.080, -0.17 of the start, and is shortened.)
+TEST(NewtonEnergySearch, ANewtonStepThatDoesNotOvershootIsKept) {
+  NewtonSettings settings = settings_to(1e-12, 30);
+  Vector x;
+  const NewtonResult without = solve_arctangent(1.0, settings, 0.2, x);
+  settings.energy_search = 0.1;
+  const NewtonResult with = solve_arctangent(1.0, settings, 0.2, x);
+  ASSERT_TRUE(with.converged) << with.failure;
+  EXPECT_EQ(with.searches, 0);
+  EXPECT_EQ(with.residuals, without.residuals);
+  settings.energy_search = 0.1;
+  EXPECT_GT(solve_arctangent(1.0, settings, 0.5, x).searches, 0);
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const std::string step = "    time_step: 0.1\n";
   text.replace(text.find(step), step.size(),
                step +
-                   "    newton: {line_search: 4, predictor: extrapolated, "
+                   "    newton: {line_search: 4, energy_line_search: 0.1, predictor: extrapolated, "
                    "extrapolated_patience: 20}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_FALSE(model.numerics.mixed_volume_average);
@@ -71,6 +71,8 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_FALSE(model.numerics.mixed_incremental_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
+  EXPECT_DOUBLE_EQ(model.phases.at(1).newton.energy_line_search, 0.1);
+  EXPECT_DOUBLE_EQ(model.phases.at(0).newton.energy_line_search, 0.0);  // off
   EXPECT_TRUE(model.phases.at(1).newton.extrapolate);
   EXPECT_FALSE(model.phases.at(0).newton.extrapolate);
   EXPECT_EQ(model.phases.at(1).newton.extrapolated_patience, 20);
@@ -346,6 +348,11 @@ const std::vector<LoadingCase> kLoadingCases = {
      "newton: {line_search: -1}",
      "phases[1].newton.line_search",
      "expected a whole number from 0 to 20"},
+    {"energy_line_search_of_one",
+     {{"    time_step: 0.1\n", "    time_step: 0.1\n    newton: {energy_line_search: 1}\n"}},
+     "newton: {energy_line_search: 1}",
+     "phases[1].newton.energy_line_search",
+     "expected a tolerance from 0 (off) up to, not including, 1"},
     {"predictor_unknown",
      {{"    time_step: 0.1\n", "    time_step: 0.1\n    newton: {predictor: linear}\n"}},
      "newton: {predictor: linear}",
