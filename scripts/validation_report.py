@@ -3690,6 +3690,14 @@ NG_CAPPED_MESHES = (5, 10, 20, 40)
 NG_ENERGY_SEARCH = 0.1
 
 
+def ngamma_searched_text(n, times=1):
+    """ngamma_rounded_text with `energy_line_search` (up to 20 iterations a step, as the rest)."""
+    return replace_once(ngamma_rounded_text(n, times),
+                        "extrapolated_patience: 20, line_search: 6, max_iterations: 20,",
+                        f"extrapolated_patience: 20, line_search: 6, "
+                        f"energy_line_search: {NG_ENERGY_SEARCH:g}, max_iterations: 20,")
+
+
 def ngamma_capped_text(n, times=1):
     """ngamma_rounded_text with `max_iterations: 10` (the extrapolated start may use all of them)
     and `energy_line_search`."""
@@ -3699,14 +3707,15 @@ def ngamma_capped_text(n, times=1):
                         f"energy_line_search: {NG_ENERGY_SEARCH:g}, max_iterations: 10,")
 
 
-def ngamma_rows(ng, w, shifts=None):
+def ngamma_rows(ng, w, shifts=None, notes=None):
     """Writes one table row per N_gamma run of `ng` ({(row, n): run}, row a key of NG_ROWS) and
     returns the means over NG_STIFF_READ, where runs stopped (settlement / B, scaled) and the
-    curves to plot; 'error' is against Martin's value plus shifts[row] (default 0)."""
+    curves to plot; 'error' is against Martin's value plus shifts[row] (default 0); notes[(row,
+    n)] is added to that run's label."""
     series = []
     ng_mean, stops = {}, {}  # stops: where runs stopped, settlement / B (scaled)
     for (mesh, n), r in ng.items():
-        label = f"| {NG_ROWS[mesh]} | B/{2 * n} |"
+        label = f"| {NG_ROWS[mesh]}{(notes or {}).get((mesh, n), '')} | B/{2 * n} |"
         x, q = push_curve(r, NG_FORCE_SCALE) if r.h is not None else (np.array([0.0]), np.array([0.0]))
         if mesh in NG_SCALED:
             x = NG_STIFFER * x
@@ -3737,6 +3746,10 @@ def ngamma_rounded_section(runner):
     w = lines.append
     texts = {("crossed_rounded", n): ngamma_rounded_text(n) for n in NG_ROUND_MESHES}
     texts.update({("crossed_rounded_2c", n): ngamma_rounded_text(n, 2) for n in NG_ROUND_MESHES_2C})
+    # c = 0.2 on h = B/80 with the energy line search: without it the run crawled near 0.0018 B
+    # in steps cut to 1/40 (stopped by hand after 36 min); on the coarser meshes the search
+    # changes the means by less than 0.1 % (the capped table).
+    texts[("crossed_rounded_2c", 40)] = ngamma_searched_text(40, 2)
     texts.update({("crossed_capped", n): ngamma_capped_text(n) for n in NG_CAPPED_MESHES})
     texts.update({("crossed_capped_2c", n): ngamma_capped_text(n, 2) for n in NG_CAPPED_MESHES})
     runs = runner.batch({f"tri_ngamma_{k[0]}_{k[1]}": t for k, t in texts.items()})
@@ -3769,7 +3782,8 @@ def ngamma_rounded_section(runner):
       "points | wall time |")
     w("|---|---|---|---|---|---|---|---|---|---|---|---|")
     means, stops, series = ngamma_rows(ng, w, {"crossed_rounded": share,
-                                               "crossed_rounded_2c": 2 * share})
+                                               "crossed_rounded_2c": 2 * share},
+                                       {("crossed_rounded_2c", 40): "; energy line search"})
     w("")
     plot_curves(os.path.join(FIGURES, "triangles_ngamma_rounded.png"), series,
                 "Rough strip on sand (φ = ψ = 30°), rounded apex, rigid-plastic limit: N_γ = 2q/(γB)",
@@ -3824,7 +3838,10 @@ def ngamma_rounded_section(runner):
       "a = 0.3) after 39 and 33 minutes, its steps cut back to a few thousandths of the push in the "
       "soft mode of the next paragraph, and we stopped both there, short of the end of the read "
       "window. Run again on two threads (the same results as on one), the c = 0.1 run finishes its "
-      "push (the B/80 row; c = 0.2 was not run again, so the doubled cohesion stops at B/40). At a "
+      "push (the B/80 row). The c = 0.2 run, run again the same way, crawled from 0.0017 B "
+      "in steps cut to a sixteenth to a fortieth of the largest (a minute or more each on one thread) and was stopped "
+      "by hand at 0.00178 B after 36 minutes; its B/80 row is run with the energy line search of "
+      "the next paragraph, which changes the coarser meshes' means by less than 0.1 %. At a "
       "fixed settlement "
       "of 0.0015 B (the start of the window; the loads of h = B/40 and B/80 fall by about 1 % and "
       "2 % after it) the four meshes carry 24.01, 20.07, 18.32, 17.33 (c = 0.1; observed order of "
@@ -3945,8 +3962,16 @@ def ngamma_rounded_section(runner):
           + (f", observed order{finest_note(finest_zero, labels)} "
              f"{zero[0]:.2f}, extrapolated h → 0: {zero[1]:.2f} "
              f"({(zero[1] / NG_ROUGH - 1) * 100:+.1f} % from Martin's {NG_ROUGH}): "
-             + ("**reached** (within 5 %)." if ok0 else "**not reached** either, but closer.")
-             if zero else ", no extrapolation (not monotonic in h)."))
+             + ("**reached** (within 5 %)." if ok0 else "**not reached** either.")
+             if zero else ", no extrapolation (not monotonic in h).")
+          + (" On h = B/80 the share is larger than on the coarser meshes because the c = "
+             f"{NG_ROUND_C:g} curve dips inside the read window (its mean, {values[3]:.2f}, lies "
+             "below its values at both ends of the window, table), and the three-mesh "
+             "extrapolation, whose observed order falls from mesh to mesh, carries that noise: "
+             "at the fixed settlement of 0.0015 B the same runs give the c → 0 values of the "
+             "paragraph above."
+             if len(added) > 3 and np.isfinite(added[3]) and added[3] > 1.3 * np.mean(added[:3])
+             else ""))
         w("")
     return lines
 
