@@ -202,7 +202,7 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   // other runs'). The cohesion adds 2 c N_c / (gamma B) = 0.30 to N_gamma by superposition
   // (N_c = 30.14 at phi = 30 deg, Prandtl), so the reference is Martin's 14.75 + 0.30 = 15.05
   // (§11 measures the cohesion's part at about twice that: the reference is a lower one). Measured
-  // (§11): 24.06 on h = B/10, 18.32 on h = B/40, 17.29 on B/80, extrapolated 5.4 % above it.
+  // (§11): 24.06 on h = B/10, 18.32 on h = B/40, 17.50 on B/80, extrapolated 11.5 % above it.
   // Newton keeps to the 10 iterations a step (a step that needs more is cut back) with
   // the energy line search (docs/theory.md §4.4, eq. 4.5a), as §11's capped rows: without it the
   // corrections two-cycle across the ramp a point far beyond the rounded tip makes (materials.md
