@@ -88,8 +88,10 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     // when a point's returned stress sweeps across a straight side of the yield surface's section
     // between the iterates (theory §4.4): it is shortened to the length at which the residual is
     // orthogonal to it, and the iterate there is evaluated again with its tangent.
+    // Only where the correction descends the energy, s(0) > 0: the mixed p-u system is a saddle
+    // point, along whose corrections dx . K dx can have either sign.
     if (k > 0 && settings.energy_search > 0.0 && !searched && halvings == 0 && admissible &&
-        std::isfinite(relative)) {
+        std::isfinite(relative) && along_start > 0.0) {
       const double along_full = dx.dot(residual);
       if (along_full < -settings.energy_search * along_start) {
         searched = true;

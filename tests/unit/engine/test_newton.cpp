@@ -241,5 +241,41 @@ TEST(NewtonEnergySearch, ANewtonStepThatDoesNotOvershootIsKept) {
   EXPECT_GT(solve_arctangent(1.0, settings, 0.5, x).searches, 0);
 }
 
+// A saddle point, as the mixed p-u system is: R = (1 - x1 - x1^3, x2 - 3), K = diag(1 + 3 x1^2,
+// -1). From x = 0 the first correction (1, 3) has s(0) = dx . R = 1 - 9 < 0: it does not descend an
+// energy, and the search (which would read the overshoot of x1 as one) stays out of it.
+class SaddlePoint final : public NonlinearProblem {
+ public:
+  bool evaluate(const Vector& x, Vector& residual, double& force_scale,
+                SparseMatrix* tangent) override {
+    residual = Vector(2);
+    residual << 1.0 - x(0) - x(0) * x(0) * x(0), x(1) - 1.2;
+    force_scale = 1.0;
+    if (tangent) {
+      *tangent = SparseMatrix(2, 2);
+      tangent->insert(0, 0) = 1.0 + 3.0 * x(0) * x(0);
+      tangent->insert(1, 1) = -1.0;
+    }
+    return true;
+  }
+  double increment_norm(const Vector& x) const override { return std::max(x.norm(), 1.0); }
+};
+
+TEST(NewtonEnergySearch, ACorrectionThatDoesNotDescendAnEnergyIsNotSearched) {
+  NewtonResult result[2];
+  for (const int with : {0, 1}) {
+    SaddlePoint problem;
+    auto solver = create_linear_solver("sparse_lu");
+    NewtonSettings settings = settings_to(1e-12, 30);
+    settings.energy_search = with ? 0.1 : 0.0;
+    Vector x = Vector::Zero(2);
+    SparseMatrix tangent;
+    result[with] = solve_newton(problem, *solver, settings, x, tangent);
+    ASSERT_TRUE(result[with].converged) << result[with].failure;
+  }
+  EXPECT_EQ(result[1].searches, 0);
+  EXPECT_EQ(result[1].residuals, result[0].residuals);
+}
+
 }  // namespace
 }  // namespace geompm
