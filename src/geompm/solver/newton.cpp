@@ -80,6 +80,11 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
   int halvings = 0;          // of the current correction
   bool searched = false;     // the current correction's length came from the energy line search
   double along_start = 0.0;  // s(0) = dx . R at the iterate the correction started from
+  // The size of a correction relative to the step's increment at x.
+  const auto relative_to_increment = [&problem, &x](const Vector& correction) {
+    const double scale = problem.increment_norm(x);
+    return scale > 0 ? correction.norm() / scale : 0.0;
+  };
   for (int k = 0;; ++k) {
     const bool admissible = problem.evaluate(x, residual, force_scale, &tangent);
     const double norm = admissible ? residual.norm() : 0.0;
@@ -101,8 +106,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
         if (eta < 1.0) {
           dx *= eta;
           x = start + dx;
-          const double scale = problem.increment_norm(x);
-          last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+          last_correction = relative_to_increment(dx);
           ++result.searches;
           --k;
           continue;
@@ -119,8 +123,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     if (k > 0 && overshot && halvings < settings.max_halvings) {
       dx *= 0.5;
       x -= dx;
-      const double scale = problem.increment_norm(x);
-      last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+      last_correction = relative_to_increment(dx);
       ++halvings;
       ++result.halvings;
       --k;
@@ -149,9 +152,8 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       // with the factorisation already at hand (one back-substitution, no new factorisation):
       // near the solution it differs from the full Newton correction by a higher-order term.
       try {
-        const double scale = problem.increment_norm(x);
-        const double estimate = scale > 0 ? solver.solve(residual).norm() / scale : 0.0;
-        correction_ok = estimate <= settings.displacement_tolerance;
+        correction_ok =
+            relative_to_increment(solver.solve(residual)) <= settings.displacement_tolerance;
       } catch (const LinearSolverFailure&) {
       }
     }
@@ -192,8 +194,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
             directional_tangent_error(problem, x, dx, residual, settings.tangent_check));
       x += dx;
       ++result.iterations;
-      const double scale = problem.increment_norm(x);
-      last_correction = scale > 0 ? dx.norm() / scale : 0.0;
+      last_correction = relative_to_increment(dx);
       result.corrections.push_back(last_correction);
       Index moved_most = -1;
       if (dx.size() > 0) dx.cwiseAbs().maxCoeff(&moved_most);
