@@ -61,7 +61,7 @@ def model_text(example):
         import validation_report as report
     if example.startswith(TRESCA_STIFF):
         kind, n = example[len(TRESCA_STIFF):].split(":")
-        text = report.tresca_limit_text(report.STRIP_FILE[kind], int(n), extrapolate=False)
+        text = report.tresca_limit_text(report.STRIP_FILE[kind], int(n), start="zero")
     elif example.startswith(STIFF):
         text = report.mc_limit_text(report.example("mohr_coulomb_footing/mohr_coulomb_footing.yaml"),
                                     int(example[len(STIFF):]))

@@ -131,48 +131,5 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaIsOverEstimatedWithoutALimitLo
   EXPECT_LT(std::abs(smooth.at(0.004) / rough.at(0.004) - 1.0), 0.06);
 }
 
-TEST(FrictionalFootingValidation, SelfWeightNgammaAtPhi20FallsAndFlattensWithTheMesh) {
-  // The rough N_gamma footing with phi = psi = 20 deg (docs/validation.md §9, N_gamma at phi = 20),
-  // where associated flow dilates at sin 20 = 0.34 of the shear rate instead of 0.5, with
-  // backtracking (`line_search: 6`), each mesh pushed 0.006 B. Martin (2005), rough, phi = 20 deg:
-  // N_gamma = 2.84 (as commonly quoted). Measured at 0.004 B: 6.77, 5.31, 4.30 on h = B/10, B/20,
-  // B/40 (+139, +87, +51 %); from 0.004 to 0.006 B the load rises by 11.2, 6.5 and 1.8 % (this
-  // test pushes every mesh 0.006 B; validation.md §9's runs, pushed further on the coarser
-  // meshes, differ a little).
-  constexpr double kNgammaRough20 = 2.84;
-  const auto text = [](int n) {
-    auto t = testing::replace_once(
-        testing::example_text("frictional_footing/frictional_footing_ngamma.yaml"),
-        "vtk: {every: 10}", "vtk: {every: 0}");
-    t = testing::replace_once(t, "phi: 30, psi: 30,", "phi: 20, psi: 20,");
-    t = testing::replace_once(t, "\"-0.007*t\"", "\"-0.006*t\"");
-    t = testing::replace_once(
-        t, "newton: {predictor: extrapolated, max_iterations: 20,",
-        "newton: {predictor: extrapolated, max_iterations: 20, line_search: 6,");
-    return testing::strip_mesh(t, n);
-  };
-  std::vector<double> q, rise;
-  for (int n : {5, 10, 20}) {
-    const auto push = run_push(text(n), "ngamma20_b" + std::to_string(2 * n), kGammaScale);
-    ASSERT_FALSE(push.stopped) << "h = B/" << 2 * n;
-    ASSERT_NEAR(push.s.back(), 0.006, 1e-6);
-    q.push_back(push.at(0.004));
-    rise.push_back(push.q.back() / q.back() - 1.0);
-    std::printf(
-        "[N_gamma, phi = 20, h = B/%d] %.2f at 0.004 B (%+.0f %% of %.2f), rising %+.1f %% "
-        "to 0.006 B\n",
-        2 * n, q.back(), (q.back() / kNgammaRough20 - 1) * 100, kNgammaRough20, rise.back() * 100);
-    // Associated flow on low-order cells over-estimates the limit load.
-    EXPECT_GT(q.back(), kNgammaRough20);
-  }
-  // Less on finer meshes ...
-  EXPECT_LT(q[1], q[0]);
-  EXPECT_LT(q[2], q[1]);
-  // ... and the curves flatten: on h = B/40 nearly a limit load.
-  EXPECT_LT(rise[1], rise[0]);
-  EXPECT_LT(rise[2], rise[1]);
-  EXPECT_LT(std::abs(rise[2]), 0.03);
-}
-
 }  // namespace
 }  // namespace geompm

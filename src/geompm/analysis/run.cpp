@@ -64,7 +64,7 @@ class OutputWriter {
                 {"step", "time", "dt", "iteration", "relative_residual", "relative_correction",
                  "converged", "largest_residual_node", "largest_residual_unknown", "tangent_error",
                  "plastic_points", "plastic_changes", "largest_correction_node",
-                 "largest_correction_unknown"}) {}
+                 "largest_correction_unknown", "step_length"}) {}
 
   /// Every Newton attempt, converged or cut back: one row per iteration, with where the
   /// residual is largest (mesh node; 0, 1, 2 = force in x, y, z, 3 = pressure equation),
@@ -72,7 +72,9 @@ class OutputWriter {
   /// the check is off or no correction followed), and the points returned plastically with
   /// how many switched between elastic and plastic since the iterate before (-1 at an attempt's
   /// first iterate), and the unknown the correction that led to the iterate moved most (node -1
-  /// at an attempt's first iterate).
+  /// at an attempt's first iterate), and the fraction of that correction kept (1 for the full
+  /// Newton correction, less where backtracking or the energy line search shortened it; 0 at an
+  /// attempt's first iterate).
   void newton_log(int step_number, double time, double dt, const StepResult& step) {
     const NewtonResult& newton = step.newton;
     for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
@@ -81,13 +83,15 @@ class OutputWriter {
       const UnknownAt moved = k > 0 && k - 1 < step.largest_correction.size()
                                   ? step.largest_correction[k - 1]
                                   : UnknownAt{};
-      newton_.append({double(step_number), time, dt, double(k), newton.residuals[k],
-                      k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
-                      newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
-                      k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0,
-                      k < newton.active.size() ? double(newton.active[k].size) : -1.0,
-                      k < newton.active.size() ? double(newton.active[k].changed) : -1.0,
-                      double(moved.node), double(moved.unknown)});
+      newton_.append(
+          {double(step_number), time, dt, double(k), newton.residuals[k],
+           k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
+           newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
+           k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0,
+           k < newton.active.size() ? double(newton.active[k].size) : -1.0,
+           k < newton.active.size() ? double(newton.active[k].changed) : -1.0, double(moved.node),
+           double(moved.unknown),
+           k > 0 && k - 1 < newton.step_lengths.size() ? newton.step_lengths[k - 1] : 0.0});
     }
   }
 

@@ -108,6 +108,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
           x = start + dx;
           last_correction = relative_to_increment(dx);
           ++result.searches;
+          result.step_lengths.back() *= eta;
           --k;
           continue;
         }
@@ -126,6 +127,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       last_correction = relative_to_increment(dx);
       ++halvings;
       ++result.halvings;
+      result.step_lengths.back() *= 0.5;
       --k;
       continue;
     }
@@ -196,6 +198,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       ++result.iterations;
       last_correction = relative_to_increment(dx);
       result.corrections.push_back(last_correction);
+      result.step_lengths.push_back(1.0);
       Index moved_most = -1;
       if (dx.size() > 0) dx.cwiseAbs().maxCoeff(&moved_most);
       result.largest_correction.push_back(moved_most >= 0 ? problem.problem_unknown(moved_most)

@@ -88,7 +88,10 @@ struct NewtonResult {
   int searches = 0;                 // corrections shortened by the energy line search
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
-  std::vector<Index> largest;       // per residual: the problem's largest_residual_unknown()
+  /// Per correction: the fraction of it kept, 1 for the full Newton correction, below 1 where the
+  /// backtracking halved it or the energy line search shortened it.
+  std::vector<double> step_lengths;
+  std::vector<Index> largest;  // per residual: the problem's largest_residual_unknown()
   /// Per correction: the unknown it moves most (its largest |dx_i|, as problem_unknown(i)).
   std::vector<Index> largest_correction;
   std::vector<ActiveSet> active;  // per residual: the problem's active_set()

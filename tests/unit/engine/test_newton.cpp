@@ -6,6 +6,7 @@
 // residual with a steep ramp between two soft branches, where plain Newton and backtracking cycle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -78,6 +79,15 @@ TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
   const NewtonResult result = solve_from(2.0, 4, x);
   expect_root_found(result, x, 0.0, result.halvings);
   EXPECT_LT(result.iterations, 15);
+  // Each correction's kept fraction is 1/2 to the power of its halvings, and they add up.
+  ASSERT_EQ(result.step_lengths.size(), std::size_t(result.iterations));
+  int halved = 0;
+  for (const double kept : result.step_lengths) {
+    const double times = -std::log2(kept);
+    EXPECT_NEAR(times, std::round(times), 1e-12) << kept;
+    halved += int(std::round(times));
+  }
+  EXPECT_EQ(halved, result.halvings);
 }
 
 // Plain Newton from x0 = 2 jumps to x1 = 2 - atan(2) (1 + 4) = -3.54: beyond |x| <= 3 the problem
@@ -222,6 +232,12 @@ TEST(NewtonEnergySearch, FindsTheRootOnASteepRampWherePlainNewtonAndBacktracking
   const NewtonResult searched = solve_ramp(0.1, 0, x);
   expect_root_found(searched, x, 0.005, searched.searches);
   EXPECT_LE(searched.iterations, 4);
+  // The shortened corrections are the ones the search took part in, and shortened, not lengthened.
+  ASSERT_EQ(searched.step_lengths.size(), std::size_t(searched.iterations));
+  EXPECT_EQ(std::count_if(searched.step_lengths.begin(), searched.step_lengths.end(),
+                          [](double kept) { return kept < 1.0; }),
+            searched.searches);
+  for (const double kept : searched.step_lengths) EXPECT_GT(kept, 0.0);
 }
 
 // Where the full correction does not overshoot by more than the tolerance, the search is not
