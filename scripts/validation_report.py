@@ -3854,7 +3854,14 @@ def ngamma_rounded_section(runner):
       "table). What the rounding costs: a rounding a third as large "
       "(a = 0.05 kPa) raises the h = B/20 load by 0.9 % (at E = 50000 γB, corners from 25°), and the soft soil (E = 50000 γB "
       "instead of ten times that) by 2.4 % on h = B/10 and 2.7 % on B/20 (tried by hand): neither "
-      "explains what is left after extrapolation, nor does the cohesion (below). *What stopped "
+      "explains what is left after extrapolation, nor does the cohesion (below). Nor do the "
+      "model's far boundaries or its graded cells (by hand, 2026-11-26): the mechanism's heave "
+      "reaches 4.4 B from the axis at the surface, mostly over the graded cells beyond 1 B, but on "
+      "h = B/20 a domain twice as wide (10 B) or 5 B deeper moves the mean by −0.04 % and −0.08 %; "
+      "with the fine cells over the whole width and 2 B deep, the means are 22.90, 19.81, 18.23 on "
+      "h = B/10, B/20, B/40 (4.8 %, 1.6 %, 0.5 % below this table's), extrapolated to 16.59 "
+      "(+10.2 % from 15.05) against 16.81 from this table's same three meshes: what is left comes "
+      "from the cells within about 1 B of the footing, which both meshes share. *What stopped "
       "h = B/80*: run with the default `extrapolated_patience` (half of the 20 iterations), it "
       "stopped at 0.00051 B (N_γ = 16.93 there; with c = 0.2, a = 0.3 at 0.00054 B), Newton failing "
       "at the smallest step at the surface nodes beside the footing's edge. Not the rounding's "
@@ -3986,7 +3993,14 @@ def ngamma_rounded_section(runner):
              "at the fixed settlement of 0.0015 B the same runs give the c → 0 values of the "
              "paragraph above."
              if len(added) > 3 and np.isfinite(added[3]) and added[3] > 1.3 * np.mean(added[:3])
-             else ""))
+             else "")
+          + " Taking the load linearly to c = 0 holds on these meshes (by hand, 2026-11-26, with the "
+          "energy line search; means over the read window): with c = 0.05, 0.1, 0.2 and 0.4 kPa "
+          "(a = 1.5 c) h = B/10 carries 23.77, 24.06, 24.61, 25.67 and h = B/20 19.85, 20.12, "
+          "20.64, 21.66, 5.7, 5.5, 5.3 and 5.4, 5.3, 5.1 per kPa between neighbours: the cohesion "
+          "is not what the extrapolation leaves above Martin's value. Nor is the soil's stiffness: "
+          "ten times stiffer again (E = 5·10⁶ γB, pushed 0.0002 B, scaled × 100) the means fall by "
+          "0.2 % and 0.5 % on h = B/10 and B/20.")
         w("")
     return lines
 
