@@ -3860,8 +3860,14 @@ def ngamma_rounded_section(runner):
       "h = B/20 a domain twice as wide (10 B) or 5 B deeper moves the mean by −0.04 % and −0.08 %; "
       "with the fine cells over the whole width and 2 B deep, the means are 22.90, 19.81, 18.23 on "
       "h = B/10, B/20, B/40 (4.8 %, 1.6 %, 0.5 % below this table's), extrapolated to 16.59 "
-      "(+10.2 % from 15.05) against 16.81 from this table's same three meshes: what is left comes "
-      "from the cells within about 1 B of the footing, which both meshes share. *What stopped "
+      "(+10.2 % from 15.05) against 16.81 from this table's same three meshes. Most of the error "
+      "sits at the footing's edge: halving the cells only in a box 0.4 B wide and deep about it "
+      "(h = B/20 elsewhere) "
+      "takes the B/20 mean from 20.12 to 18.99, two thirds of the way to the B/40 mesh's 18.32; "
+      "and with the cells graded 3 : 1 towards the edge across the width and towards the surface "
+      "over the top 1 B (as many cells as this table's) the means are 22.59, 19.47, 18.09, "
+      "extrapolated to 16.99 (+12.9 %). Three families of meshes extrapolate to 16.6–17.0, so "
+      "what is left above 15.05 is not the pre-asymptotic error of one family. *What stopped "
       "h = B/80*: run with the default `extrapolated_patience` (half of the 20 iterations), it "
       "stopped at 0.00051 B (N_γ = 16.93 there; with c = 0.2, a = 0.3 at 0.00054 B), Newton failing "
       "at the smallest step at the surface nodes beside the footing's edge. Not the rounding's "
@@ -3954,7 +3960,14 @@ def ngamma_rounded_section(runner):
           "itself moving — and the zero start after it does not converge in ten either; halving "
           "the step does not help, since the extrapolated start then unloads some 40 000 points "
           "in its first correction. With up to 20 iterations (the first table) the same mesh "
-          "finishes (c = 0.1).")
+          "finishes (c = 0.1). Nor does a zero start that flows where the last step flowed "
+          "(`surface_tangent: plastic`, docs/materials.md §1.7; by hand, 2026-11-26, c = 0.1): it "
+          "gets through the steps before (cut back at the onset, as without it) but stops at the same step "
+          "(0.00053 B), its relative residual left at 10⁻³–10⁻² after ten iterations at every step "
+          "size from 1/2 to 1/64 of the largest, the largest out-of-balance forces at the nodes of "
+          "the footing's edge (x = 0.50–0.53 B, at the surface and a quarter-cell below): a residual "
+          "that does not shrink with the step points to a switch at the state the step starts from, "
+          "not to a step too long.")
     w("")
     # With every capped run finished, its own extrapolations (else they repeat the first table's).
     if not missed and NG_CAPPED_MESHES == NG_ROUND_MESHES:
