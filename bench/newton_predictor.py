@@ -13,17 +13,12 @@ time over the repetitions, and the largest difference of the model's load histor
 starts); docs/performance.md carries it (bench/performance_notes.md marks where). With --only,
 just the models whose example path contains TEXT are run, and their rows replaced in the table.
 """
-import argparse
 import os
 import re
-import statistics
 import sys
-import subprocess
 import tempfile
 
-import numpy as np
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from whole_runs import ROOT, arguments, history_cell, history_difference, machine, repeated, write_table
 
 # Models derived from the examples as docs/validation.md derives them: `stiff_strip:n` is the c-phi
 # strip's rigid-plastic limit of §8 (E = 5e4 c, pushed 0.002 B) on n cells under the half-width.
@@ -71,47 +66,10 @@ def model_text(example):
     return re.sub(r"vtk: \{every: \d+\}", "vtk: {every: 0}", text)
 
 
-SUMMARY = re.compile(r"finished: (\d+) steps, (\d+) Newton iterations \(at most (\d+) in a step\), "
-                     r"(\d+) cut-backs, wall time ([\d.]+) s")
-
-
-def short_failure(message):
-    """Where a run stopped and why, from geompm's 'run stopped: phase ..., the step at time T did
-    not converge with the smallest allowed time step (...): REASON; more' message."""
-    m = re.search(r"phase '([^']+)': the step at time ([\d.e+-]+) did not converge with the "
-                  r"smallest allowed time step \([^)]*\): ([^;]*)", message)
-    if not m:
-        return message[:160]
-    phase, time, reason = m.groups()
-    return f"at t = {float(time):g} of phase '{phase}': {reason.strip()}"
-
-
-def run(binary, text, work, name):
-    model = os.path.join(work, name + ".yaml")
-    with open(model, "w") as f:
-        f.write(text)
-    out = os.path.join(work, name)
-    res = subprocess.run([binary, "run", model, "-q", "-t", "1", "-o", out], capture_output=True,
-                         text=True)
-    m = SUMMARY.search(res.stderr)
-    history = np.genfromtxt(os.path.join(out, "history.csv"), delimiter=",", names=True)
-    if not m:
-        said = (res.stderr + res.stdout).strip().splitlines() or ["(no message)"]
-        stopped = [line for line in said if line.startswith("run stopped")]
-        return None, history, short_failure((stopped or said)[-1])
-    steps, iterations, most, cutbacks, wall = m.groups()
-    return (int(steps), int(iterations), int(most), int(cutbacks), float(wall)), history, ""
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--build-dir", default="build")
-    parser.add_argument("--repetitions", type=int, default=3)
-    parser.add_argument("--only", action="append", default=[],
-                        help="run only the models whose example path contains this (repeatable)")
-    args = parser.parse_args()
+    args = arguments(__doc__, "run only the models whose example path contains this (repeatable)")
     binary = os.path.join(ROOT, args.build_dir, "geompm")
-    rows = []
+    rows = {}
     with tempfile.TemporaryDirectory() as work:
         for label, example, column in MODELS:
             if args.only and not any(part in example for part in args.only):
@@ -123,38 +81,19 @@ def main():
             variants = {"zero": zero,
                         "plastic": PLASTIC_SIDE.sub(r"\1 surface_tangent: plastic,", zero),
                         "extrapolated": zero.replace("newton: {", "newton: {predictor: extrapolated, ")}
-            result = {}
-            for name, model in variants.items():
-                walls, first = [], None
-                for k in range(args.repetitions):
-                    summary, history, failure = run(binary, model, work, f"{name}_{k}")
-                    if summary is None:
-                        first = (None, history, failure)
-                        break
-                    walls.append(summary[4])
-                    first = first or (summary, history, "")
-                result[name] = (first, statistics.median(walls) if walls else float("nan"))
-            (s0, h0, _), _ = result["zero"]
-            differences = {}
-            for name, ((s, h, _), _) in result.items():
-                differences[name] = float("nan")
-                if s0 and s and len(h0) == len(h):
-                    scale = np.max(np.abs(h0[column]))
-                    differences[name] = float(np.max(np.abs(h0[column] - h[column])) / scale)
-            rows.append((label, example, result, differences))
+            result = {name: repeated(binary, model, work, name, args.repetitions)
+                      for name, model in variants.items()}
+            differences = {name: history_difference(result["zero"], r, column)
+                           for name, r in result.items()}
             print(label, {k: (v[0][0], v[1]) for k, v in result.items()}, differences, flush=True)
-    cpu = "unknown"
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
+            rows[example] = (f"| {label} (`{example}`) | {cells(result['zero'])} | "
+                             f"{cells(result['plastic'])} | {history_cell(differences['plastic'])} | "
+                             f"{cells(result['extrapolated'])} | "
+                             f"{history_cell(differences['extrapolated'])} |")
     lines = ["# Newton's first iterate: zero, zero with the plastic side's tangent on the surface, "
              "and extrapolated", "",
-             "Generated by `bench/newton_predictor.py` "
-             f"({args.repetitions} runs of each, the median wall time; `geompm run -t 1`, VTK "
-             f"off; {cpu}, 2 cores, load average {open('/proc/loadavg').read().split()[0]} at the "
-             "end). Each model as it is (a zero start), with `surface_tangent: plastic` added to "
+             f"Generated by `bench/newton_predictor.py` ({machine(args.repetitions)}). Each model "
+             "as it is (a zero start), with `surface_tangent: plastic` added to "
              "its soil (docs/materials.md §1.7), and with `predictor: extrapolated` added to every "
              "phase's `newton` instead. 'Load history' is the largest difference of the load column "
              "from the zero start's over the run, relative to its largest value, where both runs "
@@ -163,36 +102,14 @@ def main():
              "| model | zero start | plastic side on the surface | load history | extrapolated | "
              "load history |",
              "|---|---|---|---|---|---|"]
+    write_table("predictor_timings.md", lines, rows, args.only)
 
-    def cells(entry):
-        (s, _, failure), w = entry
-        if s is None:
-            return f"stopped {failure}"
-        return f"{s[0]} / {s[1]} / **{s[2]}** / {s[3]} / {w:.1f} s"
 
-    def history(d):
-        return ("other steps" if d != d else "identical as printed" if d == 0 else f"{d:.1e}")
-
-    new_rows = {}
-    for label, example, result, differences in rows:
-        new_rows[example] = (f"| {label} (`{example}`) | {cells(result['zero'])} | "
-                             f"{cells(result['plastic'])} | {history(differences['plastic'])} | "
-                             f"{cells(result['extrapolated'])} | "
-                             f"{history(differences['extrapolated'])} |")
-    path = os.path.join(ROOT, "bench", "predictor_timings.md")
-    if args.only:
-        # The other rows as they were measured last: replace only the rows run now.
-        with open(path) as f:
-            lines = f.read().rstrip("\n").split("\n")
-        for k, line in enumerate(lines):
-            for example, row in new_rows.items():
-                if f"(`{example}`)" in line:
-                    lines[k] = row
-    else:
-        lines += list(new_rows.values())
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("wrote bench/predictor_timings.md")
+def cells(entry):
+    (s, _, failure, _), w = entry
+    if s is None:
+        return f"stopped {failure}"
+    return f"{s[0]} / {s[1]} / **{s[2]}** / {s[3]} / {w:.1f} s"
 
 
 if __name__ == "__main__":
