@@ -176,7 +176,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   const yaml::Map section =
       node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
                 "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure",
-                "mixed_pressure_equation", "pressure_stabilisation_floor", "mixed_pressure_start"});
+                "mixed_pressure_equation", "pressure_stabilisation_floor", "mixed_pressure_start",
+                "sparse_node_stiffness", "sparse_node_fill"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -189,6 +190,14 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   }
   if (auto stiffness = section.find("empty_cell_stiffness"))
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
+  if (auto stiffness = section.find("sparse_node_stiffness"))
+    numerics.sparse_node_stiffness = read_non_negative(*stiffness);
+  if (auto fill = section.find("sparse_node_fill")) {
+    numerics.sparse_node_fill = fill->number();
+    if (!(numerics.sparse_node_fill > 0.0 && numerics.sparse_node_fill <= 1.0))
+      fill->fail(fmt::format("expected a fraction of a node's support, 0 < fill <= 1, found {}",
+                             numerics.sparse_node_fill));
+  }
   if (auto floor = section.find("pressure_stabilisation_floor"))
     numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {

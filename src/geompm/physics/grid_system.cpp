@@ -207,6 +207,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
 
   if (mixed_) initialise_pressure(points);
   empty_cell_stiffness_typed<E>();
+  sparse_node_springs_typed<E>(points);
   if (settings_.interpolation == GridInterpolation::DualDomain)
     build_dual_domain_stencils<E>(points);
   union_start_.clear();
@@ -384,6 +385,40 @@ void GridSystem::empty_cell_stiffness_typed() {
         K.bottomRightCorner(m - n, m - n).noalias() +=
             (w_p * dv * pressure_factor) * (s.N * s.N.transpose());
     }
+  }
+}
+
+template <class E>
+void GridSystem::sparse_node_springs_typed(const MaterialPoints& points) {
+  // A node whose support the points barely reach (a soil point at the far corner of its support,
+  // the rest emptied, as beside a footing's edge) is held only by the empty-cell stiffness of its
+  // cells: Newton's corrections move it by as much as the step's increment, and a contact or a
+  // return nearby turns them back (docs/validation.md §7). Eq. 6.2: its support fill
+  // s_a = sum_p N_a(x_p) v_p / sum_c |c| / nen (the points' volume it sees against the volume its
+  // shape function covers) below s_min gives it a spring E_s (1 - s_a / s_min) |c| / (nen h_c^2)
+  // from each of its cells, on the step's displacement like the empty-cell stiffness.
+  sparse_node_factor_.clear();
+  if (settings_.sparse_node_modulus <= 0.0) return;
+  constexpr int nen = E::nodes;
+  const Index n_nodes = static_cast<Index>(active_nodes_.size());
+  const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
+  std::vector<double> seen(n_nodes, 0.0), covered(n_nodes, 0.0);
+  for (Index ci = 0; ci < static_cast<Index>(active_cells_.size()); ++ci) {
+    const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
+    const double share = cell_measure(mesh_, active_cells_[ci], radial) / nen;
+    for (int a = 0; a < nen; ++a) {
+      const Index na = node_to_active_[nodes[a]];
+      covered[na] += share;
+      for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
+        seen[na] += shape_[std::size_t(p) * nen + a] * points.volume[p];
+    }
+  }
+  sparse_node_factor_.assign(n_nodes, 0.0);
+  const double fill_min = settings_.sparse_node_fill;
+  for (Index na = 0; na < n_nodes; ++na) {
+    const double fill = covered[na] > 0.0 ? seen[na] / covered[na] : 1.0;
+    if (fill < fill_min)
+      sparse_node_factor_[na] = settings_.sparse_node_modulus * (1.0 - fill / fill_min);
   }
 }
 
@@ -700,6 +735,23 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
             empty_stiffness_.data() + std::size_t(empty_offset_[ci]) * m * m);
         f_cell.noalias() = K_empty * x_flat;
         K_cell = K_empty;
+      }
+      // Springs at the nodes the points barely support (eq. 6.2), this cell's share.
+      if (!sparse_node_factor_.empty()) {
+        double share = -1.0;
+        for (int a = 0; a < nen; ++a) {
+          const double factor = sparse_node_factor_[active[a]];
+          if (factor <= 0.0) continue;
+          if (share < 0.0) {
+            const Index c = active_cells_[ci];
+            share = cell_measure(mesh_, c, settings_.kinematics == Kinematics::Axisymmetric) /
+                    (nen * std::pow(cell_measure(mesh_, c, false), 2.0 / dim));
+          }
+          for (int i = 0; i < dim; ++i) {
+            f_cell(a * dim + i) += factor * share * x_flat(a * dim + i);
+            K_cell(a * dim + i, a * dim + i) += factor * share;
+          }
+        }
       }
       if constexpr (Mixed) {
         Eigen::Matrix<double, nen, nen> S;

@@ -43,7 +43,11 @@ enum class GridInterpolation { Standard, DualDomain, Gimp };
 struct GridSettings {
   Kinematics kinematics = Kinematics::PlaneStrain;
   double empty_cell_modulus = 0.0;  // Young's modulus of the empty-cell stiffness (seed §3.2)
-  int buffer_layers = 1;            // layers of empty cells activated around occupied cells
+  /// Young's modulus of the springs at nodes the points barely support (docs/theory.md eq. 6.2):
+  /// 0 for none; they act on nodes whose support fill is below sparse_node_fill.
+  double sparse_node_modulus = 0.0;
+  double sparse_node_fill = 0.05;
+  int buffer_layers = 1;  // layers of empty cells activated around occupied cells
   GridInterpolation interpolation = GridInterpolation::Standard;
   /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The
   /// system has pressure unknowns when any material is mixed.
@@ -223,6 +227,8 @@ class GridSystem {
                      const Vector& acceleration, double dt, bool dynamic) const;
   template <class E>
   void empty_cell_stiffness_typed();
+  template <class E>
+  void sparse_node_springs_typed(const MaterialPoints& points);
   /// Whether point p carries a target spring (eq. 5.1) or a point force law (eq. 13.6).
   bool has_point_force(Index p) const {
     return (!target_stiffness_.empty() && target_stiffness_[p] > 0.0) ||
@@ -269,6 +275,9 @@ class GridSystem {
   std::vector<Index> active_cells_;
   std::vector<Index> cell_point_begin_, cell_point_end_;  // into the cell-sorted points
   std::vector<double> cell_fill_;
+  /// Per active node: the sparse-node spring's modulus factor E_s (1 - s_a / s_min) where its
+  /// support fill s_a is below s_min (eq. 6.2), else 0; empty when the springs are off.
+  std::vector<double> sparse_node_factor_;
   std::vector<double> cell_mixed_fill_;  // fraction covered by points of mixed materials
   std::vector<double> cell_size_;        // per point: size of its cell
   mutable std::vector<char> plastic_;    // per point: plastic in the last evaluation

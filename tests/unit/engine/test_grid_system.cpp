@@ -577,6 +577,75 @@ TEST(GridSystemPressureStabilisation, TheFloorResistsAModeThePointsCannotSee) {
               1e-9 * std::abs(pressure_energy(0.0, constant)));
 }
 
+// Springs at the nodes the points barely support (docs/theory.md eq. 6.2). The oedometer block
+// fills 4 x 4 square cells of 0.25 m, with a buffer row of empty cells above it: the nodes on top
+// of the buffer row see no point (support fill 0) and get E_s |c| / (4 h^2) = E_s / 4 from each
+// of their active cells, on each displacement component; the block's surface nodes (fill 1/2)
+// and inner nodes (fill 1) get none; and the springs act on the step's displacement, so the
+// internal force changes by exactly the added stiffness times it.
+TEST(GridSystemSparseNodes, OnlyTheNodesThePointsDoNotReachGetTheSpring) {
+  const auto spec = testing::read_example("oedometer/oedometer.yaml");
+  auto model = build_model(spec);
+  const double modulus = 100.0;
+  Vector du;
+  const auto assemble = [&](double sparse, Vector& f, SparseMatrix& K,
+                            std::vector<Index>& free_index, std::vector<Index>& nodes,
+                            std::vector<Index>& cells) {
+    GridSettings settings;
+    settings.kinematics = spec.kinematics;
+    settings.sparse_node_modulus = sparse;
+    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    MaterialPoints points = model->points;
+    grid.initialise(points);
+    grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+    if (du.size() == 0) {
+      du = Vector::Zero(grid.num_dofs());
+      for (Index d = 0; d < du.size(); ++d) du(d) = 1e-3 * std::sin(0.7 * d + 0.3);
+    }
+    EXPECT_TRUE(grid.internal_force(points, du, f, &K));
+    free_index = grid.free_index();
+    nodes = grid.active_nodes();
+    cells = grid.active_cells();
+  };
+  Vector f_off, f_on;
+  SparseMatrix K_off, K_on;
+  std::vector<Index> free_off, free_on, nodes, cells, cells_on;
+  assemble(0.0, f_off, K_off, free_off, nodes, cells);
+  assemble(modulus, f_on, K_on, free_on, nodes, cells_on);
+  ASSERT_EQ(free_off, free_on);
+  ASSERT_EQ(cells, cells_on);
+  const SparseMatrix added = K_on - K_off;
+  // Expected: E_s / 4 per active cell of a node on top of the buffer row (y = 1.25 m).
+  std::map<Index, double> expected;
+  for (const Index c : cells)
+    for (const Index n : model->mesh.cell_nodes(c))
+      if (model->mesh.nodes[n].y() > 1.25 - 1e-9) expected[n] += modulus / 4.0;
+  ASSERT_EQ(expected.size(), 5u);  // the 5 nodes of the top row
+  const int dim = 2;
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (int i = 0; i < dim; ++i) {
+      const Index row = free_on[a * dim + i];
+      const auto it = expected.find(nodes[a]);
+      EXPECT_NEAR(added.coeff(row, row), it == expected.end() ? 0.0 : it->second, 1e-9 * modulus)
+          << "node " << nodes[a] << " at y = " << model->mesh.nodes[nodes[a]].y();
+    }
+  // Nothing off the diagonal, and the force is the added stiffness on the step's displacement.
+  double off_diagonal = 0.0;
+  for (int k = 0; k < added.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(added, k); it; ++it)
+      if (it.row() != it.col()) off_diagonal = std::max(off_diagonal, std::abs(it.value()));
+  EXPECT_EQ(off_diagonal, 0.0);
+  Vector du_free = Vector::Zero(K_on.cols()), df_free = Vector::Zero(K_on.rows());
+  for (Index d = 0; d < static_cast<Index>(free_on.size()); ++d)
+    if (free_on[d] >= 0) {
+      du_free(free_on[d]) = du(d);
+      df_free(free_on[d]) = f_on(d) - f_off(d);
+    }
+  const Vector spring_force = added * du_free;
+  ASSERT_GT(spring_force.norm(), 0.0);
+  EXPECT_LT((df_free - spring_force).norm(), 1e-12 * spring_force.norm());
+}
+
 // The exact projection of each cell type: its null space is the constant pressures, and on a
 // Quad4 cell it is the closed form (1/36) [4 2 1 2; 2 4 2 1; 1 2 4 2; 2 1 2 4] - 1/16.
 TEST(GridSystemPressureStabilisation, TheExactProjectionKeepsOnlyConstants) {

@@ -91,6 +91,13 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   const spec::Model fitted = read_model_from_string(
       kLoadingModel + "numerics: {mixed_pressure_start: fitted}\n", "model.yaml");
   EXPECT_TRUE(fitted.numerics.fitted_pressure_start);
+  EXPECT_EQ(defaults.numerics.sparse_node_stiffness, 0.0);  // off
+  EXPECT_EQ(defaults.numerics.sparse_node_fill, 0.05);
+  const spec::Model sparse = read_model_from_string(
+      kLoadingModel + "numerics: {sparse_node_stiffness: 1.0e-2, sparse_node_fill: 0.02}\n",
+      "model.yaml");
+  EXPECT_EQ(sparse.numerics.sparse_node_stiffness, 1.0e-2);
+  EXPECT_EQ(sparse.numerics.sparse_node_fill, 0.02);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -410,6 +417,20 @@ const std::vector<LoadingCase> kLoadingCases = {
        "numerics: {pressure_stabilisation_floor: -0.1}\n"}},
      "pressure_stabilisation_floor: -0.1",
      "numerics.pressure_stabilisation_floor",
+     ">= 0"},
+    {"sparse_node_fill_of_zero",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {sparse_node_fill: 0}\n"}},
+     "sparse_node_fill: 0",
+     "numerics.sparse_node_fill",
+     "expected a fraction of a node's support, 0 < fill <= 1, found 0"},
+    {"sparse_node_stiffness_negative",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {sparse_node_stiffness: -1}\n"}},
+     "sparse_node_stiffness: -1",
+     "numerics.sparse_node_stiffness",
      ">= 0"},
 };
 
