@@ -578,14 +578,28 @@ TEST(GridSystemPressureStabilisation, TheFloorResistsAModeThePointsCannotSee) {
 }
 
 // Springs at the nodes the points barely support (docs/theory.md eq. 6.2). The oedometer block
-// fills 4 x 4 square cells of 0.25 m, with a buffer row of empty cells above it: the nodes on top
-// of the buffer row see no point (support fill 0) and get E_s |c| / (4 h^2) = E_s / 4 from each
-// of their active cells, on each displacement component; the block's surface nodes (fill 1/2)
-// and inner nodes (fill 1) get none; and the springs act on the step's displacement, so the
-// internal force changes by exactly the added stiffness times it.
-TEST(GridSystemSparseNodes, OnlyTheNodesThePointsDoNotReachGetTheSpring) {
+// fills 4 x 4 square cells of 0.25 m, with a buffer row of empty cells above it. One point of the
+// block's top row is moved just into the buffer row (y = 1.01 m), so that two nodes on top of it
+// see a little of it (support fill 0.015 < 0.05: a spring of 0.7 of the full one); the other
+// nodes on top see no point (fill 0) and get E_s |c| / (4 h^2) = E_s / 4 from each of their
+// active cells, on each displacement component; the block's surface nodes (fill about 1/2) and
+// inner nodes (fill 1) get none; and the springs act on the step's displacement, so the internal
+// force changes by exactly the added stiffness times it.
+TEST(GridSystemSparseNodes, OnlyTheNodesThePointsBarelyReachGetTheSpring) {
   const auto spec = testing::read_example("oedometer/oedometer.yaml");
   auto model = build_model(spec);
+  auto& pts = model->points;
+  Index moved = -1;
+  for (Index p = 0; p < pts.size(); ++p)
+    if (std::abs(pts.position[p].x() - 0.3125) < 1e-9 &&
+        std::abs(pts.position[p].y() - 0.9375) < 1e-9)
+      moved = p;
+  ASSERT_GE(moved, 0);
+  const auto where = model->locator->locate(Vec3(0.3125, 1.01, 0.0), pts.cell[moved]);
+  ASSERT_TRUE(where);
+  pts.position[moved] = Vec3(0.3125, 1.01, 0.0);
+  pts.cell[moved] = where->cell;
+  pts.local[moved] = where->xi;
   const double modulus = 100.0;
   Vector du;
   const auto assemble = [&](double sparse, Vector& f, SparseMatrix& K,
@@ -615,12 +629,28 @@ TEST(GridSystemSparseNodes, OnlyTheNodesThePointsDoNotReachGetTheSpring) {
   ASSERT_EQ(free_off, free_on);
   ASSERT_EQ(cells, cells_on);
   const SparseMatrix added = K_on - K_off;
-  // Expected: E_s / 4 per active cell of a node on top of the buffer row (y = 1.25 m).
-  std::map<Index, double> expected;
+  // Expected, from eq. 6.2 on this uniform grid (h = 0.25 m, the bilinear hats): for a node on
+  // top of the buffer row (y = 1.25 m), with c_a of its cells active, fill s = sum_p N_a v_p /
+  // (c_a h^2 / 4) and a spring E_s (1 - s / 0.05) c_a / 4.
+  const double h = 0.25;
+  std::map<Index, int> active_cells_of;
   for (const Index c : cells)
     for (const Index n : model->mesh.cell_nodes(c))
-      if (model->mesh.nodes[n].y() > 1.25 - 1e-9) expected[n] += modulus / 4.0;
-  ASSERT_EQ(expected.size(), 5u);  // the 5 nodes of the top row
+      if (model->mesh.nodes[n].y() > 1.25 - 1e-9) ++active_cells_of[n];
+  ASSERT_EQ(active_cells_of.size(), 5u);  // the 5 nodes of the top row
+  std::map<Index, double> expected;
+  int partly = 0;
+  for (const auto& [n, count] : active_cells_of) {
+    double seen = 0.0;
+    for (Index p = 0; p < pts.size(); ++p) {
+      const Vec3 d = (pts.position[p] - model->mesh.nodes[n]).cwiseAbs() / h;
+      seen += std::max(0.0, 1.0 - d.x()) * std::max(0.0, 1.0 - d.y()) * pts.volume[p];
+    }
+    const double fill = seen / (count * h * h / 4.0);
+    if (fill > 0.0) ++partly;
+    expected[n] = modulus * (1.0 - fill / 0.05) * count / 4.0;
+  }
+  EXPECT_EQ(partly, 2);  // the two nodes above the moved point's cell
   const int dim = 2;
   for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int i = 0; i < dim; ++i) {
