@@ -6,6 +6,7 @@ import os
 import re
 import statistics
 import subprocess
+import tempfile
 
 import numpy as np
 
@@ -68,6 +69,21 @@ def repeated(binary, text, work, name, repetitions, measure=None):
         first = first or (summary, history, "",
                           measure(os.path.join(work, out)) if measure else None)
     return first, statistics.median(walls) if walls else float("nan")
+
+
+def compared_runs(args, models, variants_of, measure=None):
+    """For each (label, key) of `models` that --only selects: (label, key, {name: repeated run})
+    for the variants {name: model text} of variants_of(key), each run args.repetitions times on
+    one thread in a temporary directory."""
+    binary = os.path.join(ROOT, args.build_dir, "geompm")
+    with tempfile.TemporaryDirectory() as work:
+        for label, key in models:
+            if args.only and not any(part in key for part in args.only):
+                continue
+            yield label, key, {
+                name: repeated(binary, text, work, f"{key.replace(':', '_')}_{name}",
+                               args.repetitions, measure)
+                for name, text in variants_of(key).items()}
 
 
 def history_difference(a, b, column):

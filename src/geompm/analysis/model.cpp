@@ -143,6 +143,11 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
                                    "built-in generator makes), but {}; use standard or ddmp",
                                    why));
   }
+  if (spec.numerics.ghost_penalty > 0.0 && mesh.cell_type == CellType::Tri6)
+    // Eq. 6.3 penalises the jump of the first derivative, which holds linear cells only.
+    throw InputError(spec.numerics.ghost_penalty_source,
+                     "ghost_penalty needs linear cells (tri3, quad4, tet4, hex8), but the mesh "
+                     "has tri6 cells; use a linear mesh or leave the ghost penalty off");
   model->locator = std::make_unique<PointLocator>(mesh);
 
   for (const auto& m : spec.materials) {

@@ -177,7 +177,7 @@ spec::Numerics read_numerics(const yaml::Node& node) {
       node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
                 "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure",
                 "mixed_pressure_equation", "pressure_stabilisation_floor", "mixed_pressure_start",
-                "sparse_node_stiffness", "sparse_node_fill"});
+                "sparse_node_stiffness", "sparse_node_fill", "ghost_penalty"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -192,6 +192,10 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
   if (auto stiffness = section.find("sparse_node_stiffness"))
     numerics.sparse_node_stiffness = read_non_negative(*stiffness);
+  if (auto gamma = section.find("ghost_penalty")) {
+    numerics.ghost_penalty = read_non_negative(*gamma);
+    numerics.ghost_penalty_source = gamma->where();
+  }
   if (auto fill = section.find("sparse_node_fill")) {
     numerics.sparse_node_fill = fill->number();
     if (!(numerics.sparse_node_fill > 0.0 && numerics.sparse_node_fill <= 1.0))

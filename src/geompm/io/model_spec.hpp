@@ -247,6 +247,8 @@ struct Numerics {
   double empty_cell_stiffness = 1e-6;   // relative to the largest Young's modulus
   double sparse_node_stiffness = 0.0;   // relative to the largest Young's modulus (eq. 6.2)
   double sparse_node_fill = 0.05;       // support fill below which a node gets that spring
+  double ghost_penalty = 0.0;           // gamma of the edge cells' face penalty (eq. 6.3)
+  SourceLocation ghost_penalty_source;  // where it was given, for errors found with the mesh
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";

@@ -208,6 +208,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   if (mixed_) initialise_pressure(points);
   empty_cell_stiffness_typed<E>();
   sparse_node_springs_typed<E>(points);
+  build_ghost_faces(points);
   if (settings_.interpolation == GridInterpolation::DualDomain)
     build_dual_domain_stencils<E>(points);
   union_start_.clear();
@@ -422,6 +423,55 @@ void GridSystem::sparse_node_springs_typed(const MaterialPoints& points) {
   }
 }
 
+void GridSystem::build_ghost_faces(const MaterialPoints& points) {
+  ghost_faces_.clear();
+  if (settings_.ghost_penalty <= 0.0) return;
+  const Index n_active = static_cast<Index>(active_cells_.size());
+  std::vector<char> occupied(n_active, 0);
+  std::vector<double> modulus(n_active, 0.0);
+  for (Index ci = 0; ci < n_active; ++ci)
+    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+      occupied[ci] = 1;
+      // The point's own Young's modulus E = 9 K G / (3 K + G): it varies in space where s_u does.
+      const ElasticModuli m = materials_[points.material[p]]->elastic_moduli(points.internal[p]);
+      const double E =
+          3.0 * m.bulk + m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
+      modulus[ci] = std::max(modulus[ci], E);
+    }
+  ghost_faces_ = ghost_penalty_faces(mesh_, topology_, active_cells_, node_to_active_, occupied,
+                                     modulus, settings_.ghost_penalty,
+                                     settings_.kinematics == Kinematics::Axisymmetric);
+}
+
+void GridSystem::add_ghost_penalty(const Vector& du, Vector& f_int, SparseMatrix* tangent) const {
+  // Few faces (the body's edge): one thread, in face order, so the sums are deterministic.
+  for (const GhostFace& face : ghost_faces_) {
+    const Index size = static_cast<Index>(face.nodes.size());
+    for (int i = 0; i < dim_; ++i)
+      for (Index a = 0; a < size; ++a)
+        for (Index b = 0; b < size; ++b)
+          f_int(face.nodes[a] * dim_ + i) += face.weight(a, b) * du(face.nodes[b] * dim_ + i);
+    if (!tangent) continue;
+    const int* outer = tangent->outerIndexPtr();
+    const int* inner = tangent->innerIndexPtr();
+    double* values = tangent->valuePtr();
+    for (int i = 0; i < dim_; ++i)
+      for (Index b = 0; b < size; ++b) {
+        const Index col = free_index_[face.nodes[b] * dim_ + i];
+        if (col < 0) continue;
+        for (Index a = 0; a < size; ++a) {
+          const Index row = free_index_[face.nodes[a] * dim_ + i];
+          if (row < 0) continue;
+          const int* end = inner + outer[col + 1];
+          const int* at = std::lower_bound(inner + outer[col], end, row);
+          if (at == end || *at != row)  // set_constraints couples every face's nodes
+            throw std::logic_error("ghost penalty: a face's coupling is not in the pattern");
+          values[at - inner] += face.weight(a, b);
+        }
+      }
+  }
+}
+
 Vector GridSystem::external_force(const MaterialPoints& points, const Vec3& gravity,
                                   const std::vector<PointSetForce>& forces) const {
   Vector f = Vector::Zero(num_dofs());
@@ -489,6 +539,10 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
       neighbours[union_nodes_[a]].insert(neighbours[union_nodes_[a]].end(),
                                          union_nodes_.begin() + union_start_[ci],
                                          union_nodes_.begin() + union_start_[ci + 1]);
+  // The ghost penalty couples the nodes of two cells across their face (eq. 6.3).
+  for (const GhostFace& face : ghost_faces_)
+    for (Index a : face.nodes)
+      neighbours[a].insert(neighbours[a].end(), face.nodes.begin(), face.nodes.end());
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -842,6 +896,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
     }
   }
   if (wide_stencil() && !wide_stencil_point_forces<dim>(points, du, f_int, tangent)) return false;
+  add_ghost_penalty(du, f_int, tangent);
   return admissible;
 }
 

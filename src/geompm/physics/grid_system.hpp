@@ -25,6 +25,7 @@
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/physics/finite_strain.hpp"
+#include "geompm/physics/ghost_penalty.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
 
@@ -47,6 +48,9 @@ struct GridSettings {
   /// 0 for none; they act on nodes whose support fill is below sparse_node_fill.
   double sparse_node_modulus = 0.0;
   double sparse_node_fill = 0.05;
+  /// gamma of the ghost penalty on the faces of the body's edge cells (docs/theory.md eq. 6.3),
+  /// relative to the cells' own Young's modulus; 0 for none.
+  double ghost_penalty = 0.0;
   int buffer_layers = 1;  // layers of empty cells activated around occupied cells
   GridInterpolation interpolation = GridInterpolation::Standard;
   /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The
@@ -229,6 +233,10 @@ class GridSystem {
   void empty_cell_stiffness_typed();
   template <class E>
   void sparse_node_springs_typed(const MaterialPoints& points);
+  /// The faces of the ghost penalty (eq. 6.3) of this step's grid; none when it is off.
+  void build_ghost_faces(const MaterialPoints& points);
+  /// f_int += g(du) and the tangent += its (constant) matrix, face by face.
+  void add_ghost_penalty(const Vector& du, Vector& f_int, SparseMatrix* tangent) const;
   /// Whether point p carries a target spring (eq. 5.1) or a point force law (eq. 13.6).
   bool has_point_force(Index p) const {
     return (!target_stiffness_.empty() && target_stiffness_[p] > 0.0) ||
@@ -278,6 +286,7 @@ class GridSystem {
   /// Per active node: the sparse-node spring's modulus factor E_s (1 - s_a / s_min) where its
   /// support fill s_a is below s_min (eq. 6.2), else 0; empty when the springs are off.
   std::vector<double> sparse_node_factor_;
+  std::vector<GhostFace> ghost_faces_;   // eq. 6.3; empty when the ghost penalty is off
   std::vector<double> cell_mixed_fill_;  // fraction covered by points of mixed materials
   std::vector<double> cell_size_;        // per point: size of its cell
   mutable std::vector<char> plastic_;    // per point: plastic in the last evaluation

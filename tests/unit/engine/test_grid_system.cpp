@@ -9,6 +9,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <random>
@@ -71,6 +72,9 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
+  // The ghost penalty (eq. 6.3) couples nodes of neighbouring cells that share no cell: the
+  // pattern must hold them, whatever the stencils.
+  settings.ghost_penalty = 0.05;
   settings.interpolation = interpolation;
   if (choice) {
     settings.mixed.assign(spec.materials.size(), choice->mixed);
@@ -674,6 +678,44 @@ TEST(GridSystemSparseNodes, OnlyTheNodesThePointsBarelyReachGetTheSpring) {
   const Vector spring_force = added * du_free;
   ASSERT_GT(spring_force.norm(), 0.0);
   EXPECT_LT((df_free - spring_force).norm(), 1e-12 * spring_force.norm());
+}
+
+// The ghost penalty in the system (eq. 6.3): on the oedometer, whose top row of cells is the
+// body's edge (the buffer row above it is empty), it adds a force linear in the step's
+// displacement, and none for a translation or a uniform strain of the whole grid, which a
+// node spring (eq. 6.2) would resist.
+TEST(GridSystemGhostPenalty, AddsALinearForceThatLinearFieldsDoNotFeel) {
+  const auto spec = testing::read_example("oedometer/oedometer.yaml");
+  auto model = build_model(spec);
+  const auto force = [&](double gamma, const std::function<double(const Vec3&, int)>& field,
+                         double scale) {
+    GridSettings settings;
+    settings.kinematics = spec.kinematics;
+    settings.ghost_penalty = gamma;
+    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    MaterialPoints points = model->points;
+    grid.initialise(points);
+    grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
+    Vector du(grid.num_dofs()), f;
+    for (std::size_t a = 0; a < grid.active_nodes().size(); ++a)
+      for (int i = 0; i < 2; ++i)
+        du(a * 2 + i) = scale * field(model->mesh.nodes[grid.active_nodes()[a]], i);
+    EXPECT_TRUE(grid.internal_force(points, du, f, nullptr));
+    return f;
+  };
+  const auto bending = [](const Vec3& x, int i) {
+    return i == 0 ? 1e-3 * std::sin(3.0 * x.y() + 1.0) * x.x() : 2e-3 * x.x() * x.x();
+  };
+  const auto linear = [](const Vec3& x, int i) {
+    return i == 0 ? 1e-3 + 2e-3 * x.x() - 1e-3 * x.y() : -5e-4 + 1e-3 * x.x() + 3e-3 * x.y();
+  };
+  const double gamma = 0.05;
+  const Vector ghost = force(gamma, bending, 1.0) - force(0.0, bending, 1.0);
+  ASSERT_GT(ghost.norm(), 1e-6 * force(0.0, bending, 1.0).norm());
+  const Vector doubled = force(gamma, bending, 2.0) - force(0.0, bending, 2.0);
+  EXPECT_LT((doubled - 2.0 * ghost).norm(), 1e-9 * ghost.norm());
+  const Vector along_linear = force(gamma, linear, 1.0) - force(0.0, linear, 1.0);
+  EXPECT_LT(along_linear.norm(), 1e-9 * ghost.norm());
 }
 
 // The exact projection of each cell type: its null space is the constant pressures, and on a

@@ -98,6 +98,10 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
       "model.yaml");
   EXPECT_EQ(sparse.numerics.sparse_node_stiffness, 1.0e-2);
   EXPECT_EQ(sparse.numerics.sparse_node_fill, 0.02);
+  EXPECT_EQ(defaults.numerics.ghost_penalty, 0.0);  // off
+  const spec::Model ghost =
+      read_model_from_string(kLoadingModel + "numerics: {ghost_penalty: 3.0e-3}\n", "model.yaml");
+  EXPECT_EQ(ghost.numerics.ghost_penalty, 3.0e-3);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -431,6 +435,13 @@ const std::vector<LoadingCase> kLoadingCases = {
        "numerics: {sparse_node_stiffness: -1}\n"}},
      "sparse_node_stiffness: -1",
      "numerics.sparse_node_stiffness",
+     ">= 0"},
+    {"ghost_penalty_negative",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {ghost_penalty: -0.01}\n"}},
+     "ghost_penalty: -0.01",
+     "numerics.ghost_penalty",
      ">= 0"},
 };
 
