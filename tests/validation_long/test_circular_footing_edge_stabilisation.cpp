@@ -3,8 +3,8 @@
 // at 0.069 D with 20: Newton's corrections move the node on the footing's edge that a single soil
 // point at its support's far corner holds; rough at 0.042 D; docs/validation.md §7), carried to
 // 0.1 D by the cures of docs/theory.md §6: springs at the nodes the points barely support
-// (eq. 6.2; smooth, with up to 20 iterations, about 5 minutes on one core) or the ghost penalty on
-// the body's edge cells (eq. 6.3; with the cap of 10 and the energy line search: smooth about 4
+// (eq. 6.2; smooth, with up to 20 iterations, about 4 minutes on one core) or the ghost penalty on
+// the body's edge cells (eq. 6.3; with the cap of 10 and the energy line search: smooth about 2.5
 // minutes, rough about 2).
 #include <gtest/gtest.h>
 

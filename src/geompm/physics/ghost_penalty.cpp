@@ -84,7 +84,7 @@ Eigen::Matrix<double, E::nodes, 1> normal_derivatives(const Mesh& mesh, Index c,
 }
 
 template <class E>
-std::vector<GhostFace> faces_typed(const Mesh& mesh, const MeshTopology& topology,
+std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topology,
                                    const std::vector<Index>& active_cells,
                                    const std::vector<Index>& node_to_active,
                                    const std::vector<char>& cell_occupied,
@@ -108,7 +108,7 @@ std::vector<GhostFace> faces_typed(const Mesh& mesh, const MeshTopology& topolog
     for (Index nb : topology.cell_neighbours.row(active_cells[ci]))
       if (!holds_points[nb]) edge[ci] = 1;
   }
-  std::vector<GhostFace> faces;
+  std::vector<NodeBlock> faces;
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
     if (!cell_occupied[ci]) continue;
     const Index a = active_cells[ci];
@@ -122,7 +122,7 @@ std::vector<GhostFace> faces_typed(const Mesh& mesh, const MeshTopology& topolog
           corners.push_back(mesh.nodes[node]);
       if (static_cast<int>(corners.size()) != face_nodes) continue;  // a corner or an edge only
 
-      GhostFace face;
+      NodeBlock face;
       for (Index node : nodes_a) face.nodes.push_back(node_to_active[node]);
       for (Index node : nodes_b) face.nodes.push_back(node_to_active[node]);
       std::sort(face.nodes.begin(), face.nodes.end());
@@ -157,7 +157,7 @@ std::vector<GhostFace> faces_typed(const Mesh& mesh, const MeshTopology& topolog
 
 }  // namespace
 
-std::vector<GhostFace> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
+std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
                                            const std::vector<Index>& active_cells,
                                            const std::vector<Index>& node_to_active,
                                            const std::vector<char>& cell_occupied,
@@ -170,7 +170,7 @@ std::vector<GhostFace> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
   return dispatch_cell_type(mesh.cell_type, [&](auto e) {
     using E = decltype(e);
     if constexpr (E::nodes == 6) {  // refused above; not compiled for Tri6
-      return std::vector<GhostFace>{};
+      return std::vector<NodeBlock>{};
     } else {
       return faces_typed<E>(mesh, topology, active_cells, node_to_active, cell_occupied,
                             cell_modulus, gamma, radial);

@@ -9,30 +9,24 @@
 // the step's displacement increment, like the empty-cell stiffness.
 #pragma once
 
-#include <Eigen/Core>
 #include <vector>
 
 #include "geompm/core/types.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/physics/node_block.hpp"
 
 namespace geompm {
 
-/// One face's penalty: on each displacement component i, f_a += sum_b weight(a, b) du_b,i over
-/// the nodes of both cells.
-struct GhostFace {
-  std::vector<Index> nodes;  // active node ids of both cells, ascending
-  Eigen::MatrixXd weight;    // symmetric, positive semi-definite
-};
-
-/// The faces that carry the penalty and their weights. A face carries it when both cells hold
-/// points and at least one of them is an edge cell: it shares a node with a cell that holds none
+/// The faces that carry the penalty, each a block over the nodes of its two cells. A face carries
+/// it when both cells hold points and at least one of them is an edge cell: it shares a node with a
+/// cell that holds none
 /// (`cell_occupied` per active cell; a cell that is not active holds none). gamma scales the
 /// modulus E_F, the smaller of the two cells' `cell_modulus` (per active cell: the largest Young's
 /// modulus of its points), so a stiff structure body does not stiffen the soil beside it; h_F is
 /// the cells' mean size. `radial`: faces are weighted by r (axisymmetry, per radian). Linear cells
 /// only: throws std::invalid_argument for Tri6.
-std::vector<GhostFace> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
+std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
                                            const std::vector<Index>& active_cells,
                                            const std::vector<Index>& node_to_active,
                                            const std::vector<char>& cell_occupied,

@@ -8,6 +8,7 @@
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
+#include "geompm/physics/ghost_penalty.hpp"
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/physics/mixed_point_kernel.hpp"
 #include "geompm/physics/point_kernel.hpp"
@@ -207,8 +208,9 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
 
   if (mixed_) initialise_pressure(points);
   empty_cell_stiffness_typed<E>();
+  step_blocks_.clear();
   sparse_node_springs_typed<E>(points);
-  build_ghost_faces(points);
+  ghost_penalty_blocks(points);
   if (settings_.interpolation == GridInterpolation::DualDomain)
     build_dual_domain_stencils<E>(points);
   union_start_.clear();
@@ -397,34 +399,38 @@ void GridSystem::sparse_node_springs_typed(const MaterialPoints& points) {
   // return nearby turns them back (docs/validation.md §7). Eq. 6.2: its support fill
   // s_a = sum_p N_a(x_p) v_p / sum_c |c| / nen (the points' volume it sees against the volume its
   // shape function covers) below s_min gives it a spring E_s (1 - s_a / s_min) |c| / (nen h_c^2)
-  // from each of its cells, on the step's displacement like the empty-cell stiffness.
-  sparse_node_factor_.clear();
+  // from each of its cells, on the step's displacement like the empty-cell stiffness: one
+  // diagonal block per such node, summed over its cells once a step.
   if (settings_.sparse_node_modulus <= 0.0) return;
-  constexpr int nen = E::nodes;
+  constexpr int nen = E::nodes, dim = E::dim;
   const Index n_nodes = static_cast<Index>(active_nodes_.size());
   const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
-  std::vector<double> seen(n_nodes, 0.0), covered(n_nodes, 0.0);
+  std::vector<double> seen(n_nodes, 0.0), covered(n_nodes, 0.0), spring_share(n_nodes, 0.0);
   for (Index ci = 0; ci < static_cast<Index>(active_cells_.size()); ++ci) {
-    const auto nodes = mesh_.cell_nodes(active_cells_[ci]);
-    const double share = cell_measure(mesh_, active_cells_[ci], radial) / nen;
+    const Index c = active_cells_[ci];
+    const auto nodes = mesh_.cell_nodes(c);
+    const double share = cell_measure(mesh_, c, radial) / nen;
+    const double spring = share / std::pow(cell_measure(mesh_, c, false), 2.0 / dim);
     for (int a = 0; a < nen; ++a) {
       const Index na = node_to_active_[nodes[a]];
       covered[na] += share;
+      spring_share[na] += spring;
       for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p)
         seen[na] += shape_[std::size_t(p) * nen + a] * points.volume[p];
     }
   }
-  sparse_node_factor_.assign(n_nodes, 0.0);
   const double fill_min = settings_.sparse_node_fill;
   for (Index na = 0; na < n_nodes; ++na) {
     const double fill = covered[na] > 0.0 ? seen[na] / covered[na] : 1.0;
     if (fill < fill_min)
-      sparse_node_factor_[na] = settings_.sparse_node_modulus * (1.0 - fill / fill_min);
+      step_blocks_.push_back(
+          {{na},
+           Eigen::MatrixXd::Constant(
+               1, 1, settings_.sparse_node_modulus * (1.0 - fill / fill_min) * spring_share[na])});
   }
 }
 
-void GridSystem::build_ghost_faces(const MaterialPoints& points) {
-  ghost_faces_.clear();
+void GridSystem::ghost_penalty_blocks(const MaterialPoints& points) {
   if (settings_.ghost_penalty <= 0.0) return;
   const Index n_active = static_cast<Index>(active_cells_.size());
   std::vector<char> occupied(n_active, 0);
@@ -438,35 +444,37 @@ void GridSystem::build_ghost_faces(const MaterialPoints& points) {
           3.0 * m.bulk + m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
       modulus[ci] = std::max(modulus[ci], E);
     }
-  ghost_faces_ = ghost_penalty_faces(mesh_, topology_, active_cells_, node_to_active_, occupied,
-                                     modulus, settings_.ghost_penalty,
-                                     settings_.kinematics == Kinematics::Axisymmetric);
+  std::vector<NodeBlock> faces = ghost_penalty_faces(
+      mesh_, topology_, active_cells_, node_to_active_, occupied, modulus, settings_.ghost_penalty,
+      settings_.kinematics == Kinematics::Axisymmetric);
+  step_blocks_.insert(step_blocks_.end(), std::make_move_iterator(faces.begin()),
+                      std::make_move_iterator(faces.end()));
 }
 
-void GridSystem::add_ghost_penalty(const Vector& du, Vector& f_int, SparseMatrix* tangent) const {
-  // Few faces (the body's edge): one thread, in face order, so the sums are deterministic.
-  for (const GhostFace& face : ghost_faces_) {
-    const Index size = static_cast<Index>(face.nodes.size());
+void GridSystem::add_step_blocks(const Vector& du, Vector& f_int, SparseMatrix* tangent) const {
+  // Few blocks (the body's edge): one thread, in order, so the sums are deterministic.
+  for (const NodeBlock& block : step_blocks_) {
+    const Index size = static_cast<Index>(block.nodes.size());
     for (int i = 0; i < dim_; ++i)
       for (Index a = 0; a < size; ++a)
         for (Index b = 0; b < size; ++b)
-          f_int(face.nodes[a] * dim_ + i) += face.weight(a, b) * du(face.nodes[b] * dim_ + i);
+          f_int(block.nodes[a] * dim_ + i) += block.weight(a, b) * du(block.nodes[b] * dim_ + i);
     if (!tangent) continue;
     const int* outer = tangent->outerIndexPtr();
     const int* inner = tangent->innerIndexPtr();
     double* values = tangent->valuePtr();
     for (int i = 0; i < dim_; ++i)
       for (Index b = 0; b < size; ++b) {
-        const Index col = free_index_[face.nodes[b] * dim_ + i];
+        const Index col = free_index_[block.nodes[b] * dim_ + i];
         if (col < 0) continue;
         for (Index a = 0; a < size; ++a) {
-          const Index row = free_index_[face.nodes[a] * dim_ + i];
+          const Index row = free_index_[block.nodes[a] * dim_ + i];
           if (row < 0) continue;
           const int* end = inner + outer[col + 1];
           const int* at = std::lower_bound(inner + outer[col], end, row);
-          if (at == end || *at != row)  // set_constraints couples every face's nodes
-            throw std::logic_error("ghost penalty: a face's coupling is not in the pattern");
-          values[at - inner] += face.weight(a, b);
+          if (at == end || *at != row)  // set_constraints couples every block's nodes
+            throw std::logic_error("step block: a coupling is not in the pattern");
+          values[at - inner] += block.weight(a, b);
         }
       }
   }
@@ -539,10 +547,10 @@ void GridSystem::set_constraints(const std::vector<char>& constrained) {
       neighbours[union_nodes_[a]].insert(neighbours[union_nodes_[a]].end(),
                                          union_nodes_.begin() + union_start_[ci],
                                          union_nodes_.begin() + union_start_[ci + 1]);
-  // The ghost penalty couples the nodes of two cells across their face (eq. 6.3).
-  for (const GhostFace& face : ghost_faces_)
-    for (Index a : face.nodes)
-      neighbours[a].insert(neighbours[a].end(), face.nodes.begin(), face.nodes.end());
+  // A block couples its nodes (the ghost penalty: two cells across their face, eq. 6.3).
+  for (const NodeBlock& block : step_blocks_)
+    for (Index a : block.nodes)
+      neighbours[a].insert(neighbours[a].end(), block.nodes.begin(), block.nodes.end());
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -790,23 +798,6 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
         f_cell.noalias() = K_empty * x_flat;
         K_cell = K_empty;
       }
-      // Springs at the nodes the points barely support (eq. 6.2), this cell's share.
-      if (!sparse_node_factor_.empty()) {
-        double share = -1.0;
-        for (int a = 0; a < nen; ++a) {
-          const double factor = sparse_node_factor_[active[a]];
-          if (factor <= 0.0) continue;
-          if (share < 0.0) {
-            const Index c = active_cells_[ci];
-            share = cell_measure(mesh_, c, settings_.kinematics == Kinematics::Axisymmetric) /
-                    (nen * std::pow(cell_measure(mesh_, c, false), 2.0 / dim));
-          }
-          for (int i = 0; i < dim; ++i) {
-            f_cell(a * dim + i) += factor * share * x_flat(a * dim + i);
-            K_cell(a * dim + i, a * dim + i) += factor * share;
-          }
-        }
-      }
       if constexpr (Mixed) {
         Eigen::Matrix<double, nen, nen> S;
         pressure_stabilisation<E>(points, ci, S);
@@ -896,7 +887,7 @@ bool GridSystem::internal_force_typed(const MaterialPoints& points, const Vector
     }
   }
   if (wide_stencil() && !wide_stencil_point_forces<dim>(points, du, f_int, tangent)) return false;
-  add_ghost_penalty(du, f_int, tangent);
+  add_step_blocks(du, f_int, tangent);
   return admissible;
 }
 

@@ -25,7 +25,7 @@
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/physics/finite_strain.hpp"
-#include "geompm/physics/ghost_penalty.hpp"
+#include "geompm/physics/node_block.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/solver/linear_solver.hpp"
 
@@ -231,12 +231,13 @@ class GridSystem {
                      const Vector& acceleration, double dt, bool dynamic) const;
   template <class E>
   void empty_cell_stiffness_typed();
+  /// The springs at the nodes the points barely support (eq. 6.2), added to step_blocks_.
   template <class E>
   void sparse_node_springs_typed(const MaterialPoints& points);
-  /// The faces of the ghost penalty (eq. 6.3) of this step's grid; none when it is off.
-  void build_ghost_faces(const MaterialPoints& points);
-  /// f_int += g(du) and the tangent += its (constant) matrix, face by face.
-  void add_ghost_penalty(const Vector& du, Vector& f_int, SparseMatrix* tangent) const;
+  /// The faces of the ghost penalty (eq. 6.3) of this step's grid, added to step_blocks_.
+  void ghost_penalty_blocks(const MaterialPoints& points);
+  /// f_int += the step blocks' forces on du and the tangent += their (constant) matrices.
+  void add_step_blocks(const Vector& du, Vector& f_int, SparseMatrix* tangent) const;
   /// Whether point p carries a target spring (eq. 5.1) or a point force law (eq. 13.6).
   bool has_point_force(Index p) const {
     return (!target_stiffness_.empty() && target_stiffness_[p] > 0.0) ||
@@ -283,10 +284,9 @@ class GridSystem {
   std::vector<Index> active_cells_;
   std::vector<Index> cell_point_begin_, cell_point_end_;  // into the cell-sorted points
   std::vector<double> cell_fill_;
-  /// Per active node: the sparse-node spring's modulus factor E_s (1 - s_a / s_min) where its
-  /// support fill s_a is below s_min (eq. 6.2), else 0; empty when the springs are off.
-  std::vector<double> sparse_node_factor_;
-  std::vector<GhostFace> ghost_faces_;   // eq. 6.3; empty when the ghost penalty is off
+  /// Stiffnesses constant over the step on the step's displacement: the sparse-node springs
+  /// (eq. 6.2) and the ghost penalty's faces (eq. 6.3); empty when both are off.
+  std::vector<NodeBlock> step_blocks_;
   std::vector<double> cell_mixed_fill_;  // fraction covered by points of mixed materials
   std::vector<double> cell_size_;        // per point: size of its cell
   mutable std::vector<char> plastic_;    // per point: plastic in the last evaluation

@@ -55,16 +55,16 @@ Row row_of_three(CellType type, Diagonals diagonals = Diagonals::Alternating,
   return row;
 }
 
-std::vector<GhostFace> faces_of(const Row& row, double gamma, bool radial = false) {
+std::vector<NodeBlock> faces_of(const Row& row, double gamma, bool radial = false) {
   return ghost_penalty_faces(row.mesh, row.topology, row.active_cells, row.node_to_active,
                              row.occupied, row.modulus, gamma, radial);
 }
 
 /// sum over faces of u^T G u for the nodal scalar field u(x).
 template <class Field>
-double penalty_energy(const Row& row, const std::vector<GhostFace>& faces, Field&& u) {
+double penalty_energy(const Row& row, const std::vector<NodeBlock>& faces, Field&& u) {
   double energy = 0.0;
-  for (const GhostFace& face : faces) {
+  for (const NodeBlock& face : faces) {
     Eigen::VectorXd values(face.nodes.size());
     for (std::size_t a = 0; a < face.nodes.size(); ++a)
       values(a) = u(row.mesh.nodes[face.nodes[a]]);
@@ -104,7 +104,7 @@ TEST(GhostPenalty, AKinkAcrossAnEdgeCellsFaceCostsGammaEhTimesTheFacesArea) {
       EXPECT_NEAR(penalty_energy(row, faces, [&](const Vec3& x) { return kink(x, 2.0 * size); }),
                   0.0, 1e-10 * expected);
       // A linear field (translation, rotation, uniform strain) has no jump anywhere.
-      for (const GhostFace& face : faces) {
+      for (const NodeBlock& face : faces) {
         Eigen::VectorXd linear(face.nodes.size());
         for (std::size_t a = 0; a < face.nodes.size(); ++a) {
           const Vec3& x = row.mesh.nodes[face.nodes[a]];
@@ -143,7 +143,7 @@ TEST(GhostPenalty, OnlyFacesOfEdgeCellsCarryIt) {
   const auto faces = faces_of(row, 0.05);
   ASSERT_FALSE(faces.empty());
   EXPECT_NEAR(penalty_energy(row, faces, [](const Vec3& x) { return kink(x, 1.0); }), 0.0, 1e-9);
-  for (const GhostFace& face : faces)
+  for (const NodeBlock& face : faces)
     for (Index node : face.nodes) EXPECT_GT(row.mesh.nodes[node].x(), 1.0 - 1e-12);
 }
 
