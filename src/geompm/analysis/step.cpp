@@ -21,6 +21,7 @@ GridSettings grid_settings(const Model& model) {
   s.sparse_node_modulus = model.spec.numerics.sparse_node_stiffness * model.largest_modulus();
   s.sparse_node_fill = model.spec.numerics.sparse_node_fill;
   s.ghost_penalty = model.spec.numerics.ghost_penalty;
+  s.ghost_penalty_fill = model.spec.numerics.ghost_penalty_fill;
   s.buffer_layers = model.spec.numerics.buffer_layers;
   s.mixed_field_pressure = model.spec.numerics.mixed_field_pressure;
   s.mixed_incremental_pressure = model.spec.numerics.mixed_incremental_pressure;

@@ -173,11 +173,11 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
 }
 
 spec::Numerics read_numerics(const yaml::Node& node) {
-  const yaml::Map section =
-      node.map({"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers",
-                "lost_points", "linear_solver", "mixed_volume", "mixed_material_pressure",
-                "mixed_pressure_equation", "pressure_stabilisation_floor", "mixed_pressure_start",
-                "sparse_node_stiffness", "sparse_node_fill", "ghost_penalty"});
+  const yaml::Map section = node.map(
+      {"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers", "lost_points",
+       "linear_solver", "mixed_volume", "mixed_material_pressure", "mixed_pressure_equation",
+       "pressure_stabilisation_floor", "mixed_pressure_start", "sparse_node_stiffness",
+       "sparse_node_fill", "ghost_penalty", "ghost_penalty_fill"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -196,12 +196,10 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.ghost_penalty = read_non_negative(*gamma);
     numerics.ghost_penalty_source = gamma->where();
   }
-  if (auto fill = section.find("sparse_node_fill")) {
-    numerics.sparse_node_fill = fill->number();
-    if (!(numerics.sparse_node_fill > 0.0 && numerics.sparse_node_fill <= 1.0))
-      fill->fail(fmt::format("expected a fraction of a node's support, 0 < fill <= 1, found {}",
-                             numerics.sparse_node_fill));
-  }
+  if (auto fill = section.find("sparse_node_fill"))
+    numerics.sparse_node_fill = read_fill_fraction(*fill, "a node's support");
+  if (auto fill = section.find("ghost_penalty_fill"))
+    numerics.ghost_penalty_fill = read_fill_fraction(*fill, "an edge cell");
   if (auto floor = section.find("pressure_stabilisation_floor"))
     numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {

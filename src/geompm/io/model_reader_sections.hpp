@@ -76,4 +76,7 @@ std::string read_boundary_name(const yaml::Node& node, const Context& context);
 double read_positive(const yaml::Node& node);
 double read_non_negative(const yaml::Node& node);
 
+/// A fraction 0 < fill <= 1 of `what` (named in the error).
+double read_fill_fraction(const yaml::Node& node, const std::string& what);
+
 }  // namespace geompm::model_reader

@@ -133,4 +133,11 @@ double read_non_negative(const yaml::Node& node) {
   return value;
 }
 
+double read_fill_fraction(const yaml::Node& node, const std::string& what) {
+  const double value = node.number();
+  if (!(value > 0.0 && value <= 1.0))
+    node.fail(fmt::format("expected a fraction of {}, 0 < fill <= 1, found {}", what, value));
+  return value;
+}
+
 }  // namespace geompm::model_reader

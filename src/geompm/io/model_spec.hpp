@@ -248,6 +248,7 @@ struct Numerics {
   double sparse_node_stiffness = 0.0;   // relative to the largest Young's modulus (eq. 6.2)
   double sparse_node_fill = 0.05;       // support fill below which a node gets that spring
   double ghost_penalty = 0.0;           // gamma of the edge cells' face penalty (eq. 6.3)
+  double ghost_penalty_fill = 0.5;      // fill up to which an edge cell carries it
   SourceLocation ghost_penalty_source;  // where it was given, for errors found with the mesh
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;

@@ -87,9 +87,8 @@ template <class E>
 std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topology,
                                    const std::vector<Index>& active_cells,
                                    const std::vector<Index>& node_to_active,
-                                   const std::vector<char>& cell_occupied,
-                                   const std::vector<double>& cell_modulus, double gamma,
-                                   bool radial) {
+                                   const GhostPenaltyCells& cells,
+                                   const GhostPenaltySettings& settings) {
   constexpr int nen = E::nodes, dim = E::dim;
   // Nodes a face of the cell has: an edge (2D), a triangle (Tet4) or a quadrangle (Hex8).
   constexpr int face_nodes = dim == 2 ? 2 : (nen == 4 ? 3 : 4);
@@ -97,24 +96,24 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
   std::vector<char> holds_points(mesh.num_cells(), 0);
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
     active_of[active_cells[ci]] = static_cast<Index>(ci);
-    holds_points[active_cells[ci]] = cell_occupied[ci];
+    holds_points[active_cells[ci]] = cells.occupied[ci];
   }
   // Edge cells: occupied, sharing a node with a cell of the mesh that holds no point (active or
-  // not, so that it works without buffer cells too). A node on the mesh's boundary has no cell
-  // beyond it: a body filling the mesh has no edge there.
+  // not, so that it works without buffer cells too), and filled at most to the limit. A node on
+  // the mesh's boundary has no cell beyond it: a body filling the mesh has no edge there.
   std::vector<char> edge(active_cells.size(), 0);
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
-    if (!cell_occupied[ci]) continue;
+    if (!cells.occupied[ci] || cells.fill[ci] > settings.fill_limit) continue;
     for (Index nb : topology.cell_neighbours.row(active_cells[ci]))
       if (!holds_points[nb]) edge[ci] = 1;
   }
   std::vector<NodeBlock> faces;
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
-    if (!cell_occupied[ci]) continue;
+    if (!cells.occupied[ci]) continue;
     const Index a = active_cells[ci];
     for (Index b : topology.cell_neighbours.row(a)) {
       const Index cj = active_of[b];
-      if (b <= a || cj < 0 || !cell_occupied[cj] || !(edge[ci] || edge[cj])) continue;
+      if (b <= a || cj < 0 || !cells.occupied[cj] || !(edge[ci] || edge[cj])) continue;
       const auto nodes_a = mesh.cell_nodes(a), nodes_b = mesh.cell_nodes(b);
       std::vector<Vec3> corners;
       for (Index node : nodes_a)
@@ -135,7 +134,7 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
       face.weight = Eigen::MatrixXd::Zero(size, size);
       const double h =
           std::pow(0.5 * (cell_measure(mesh, a, false) + cell_measure(mesh, b, false)), 1.0 / dim);
-      const double scale = gamma * std::min(cell_modulus[ci], cell_modulus[cj]) * h;
+      const double scale = settings.gamma * std::min(cells.modulus[ci], cells.modulus[cj]) * h;
       Eigen::VectorXd jump(size);
       for (const FacePoint& q : face_quadrature(corners, dim)) {
         // [grad N . n] over both cells' nodes: a node of both (on the face) takes the difference.
@@ -146,7 +145,7 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
           jump(at(nodes_a[k])) += g_a(k);
           jump(at(nodes_b[k])) -= g_b(k);
         }
-        const double w = scale * q.weight * (radial ? q.x.x() : 1.0);
+        const double w = scale * q.weight * (settings.radial ? q.x.x() : 1.0);
         face.weight.noalias() += w * jump * jump.transpose();
       }
       faces.push_back(std::move(face));
@@ -160,9 +159,8 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
 std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
                                            const std::vector<Index>& active_cells,
                                            const std::vector<Index>& node_to_active,
-                                           const std::vector<char>& cell_occupied,
-                                           const std::vector<double>& cell_modulus, double gamma,
-                                           bool radial) {
+                                           const GhostPenaltyCells& cells,
+                                           const GhostPenaltySettings& settings) {
   if (mesh.cell_type == CellType::Tri6)
     throw std::invalid_argument(
         "numerics.ghost_penalty: needs linear cells (tri3, quad4, tet4, hex8); the jump of a "
@@ -172,8 +170,7 @@ std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
     if constexpr (E::nodes == 6) {  // refused above; not compiled for Tri6
       return std::vector<NodeBlock>{};
     } else {
-      return faces_typed<E>(mesh, topology, active_cells, node_to_active, cell_occupied,
-                            cell_modulus, gamma, radial);
+      return faces_typed<E>(mesh, topology, active_cells, node_to_active, cells, settings);
     }
   });
 }

@@ -18,19 +18,35 @@
 
 namespace geompm {
 
+/// What the penalty needs to know of each active cell of the step (indexed like `active_cells`;
+/// a cell that is not active holds no points).
+struct GhostPenaltyCells {
+  std::vector<char> occupied;   // 1 if the cell holds points
+  std::vector<double> modulus;  // the largest Young's modulus of its points
+  std::vector<double> fill;     // the fraction of its measure its points' volumes fill, <= 1
+};
+
+/// How much, and where: `gamma` scales the face's modulus; an edge cell counts only while its
+/// fill is at most `fill_limit` (1: every edge cell); `radial` weights faces by r (axisymmetry,
+/// per radian).
+struct GhostPenaltySettings {
+  double gamma = 0.0;
+  double fill_limit = 0.5;
+  bool radial = false;
+};
+
 /// The faces that carry the penalty, each a block over the nodes of its two cells. A face carries
 /// it when both cells hold points and at least one of them is an edge cell: it shares a node with a
-/// cell that holds none
-/// (`cell_occupied` per active cell; a cell that is not active holds none). gamma scales the
-/// modulus E_F, the smaller of the two cells' `cell_modulus` (per active cell: the largest Young's
-/// modulus of its points), so a stiff structure body does not stiffen the soil beside it; h_F is
-/// the cells' mean size. `radial`: faces are weighted by r (axisymmetry, per radian). Linear cells
-/// only: throws std::invalid_argument for Tri6.
+/// cell that holds none, and its points fill at most `fill_limit` of it. A well-filled cell on the
+/// body's surface has nodes its points support well; where the body kinks for real beside it (the
+/// fan at a footing's edge) the penalty would only stiffen it (docs/theory.md §6). gamma scales
+/// E_F, the smaller of the two cells' moduli, so a stiff structure body does not stiffen the soil
+/// beside it; h_F is the cells' mean size. Linear cells only: throws std::invalid_argument for
+/// Tri6.
 std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology& topology,
                                            const std::vector<Index>& active_cells,
                                            const std::vector<Index>& node_to_active,
-                                           const std::vector<char>& cell_occupied,
-                                           const std::vector<double>& cell_modulus, double gamma,
-                                           bool radial);
+                                           const GhostPenaltyCells& cells,
+                                           const GhostPenaltySettings& settings);
 
 }  // namespace geompm

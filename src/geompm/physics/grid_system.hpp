@@ -49,8 +49,10 @@ struct GridSettings {
   double sparse_node_modulus = 0.0;
   double sparse_node_fill = 0.05;
   /// gamma of the ghost penalty on the faces of the body's edge cells (docs/theory.md eq. 6.3),
-  /// relative to the cells' own Young's modulus; 0 for none.
+  /// relative to the cells' own Young's modulus; 0 for none. An edge cell counts while its points
+  /// fill at most ghost_penalty_fill of it.
   double ghost_penalty = 0.0;
+  double ghost_penalty_fill = 0.5;
   int buffer_layers = 1;  // layers of empty cells activated around occupied cells
   GridInterpolation interpolation = GridInterpolation::Standard;
   /// Per material index: 1 if its points use the mixed p-u formulation (docs/theory.md §11). The

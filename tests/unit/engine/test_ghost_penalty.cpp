@@ -3,7 +3,8 @@
 // first two hold points, the third is an active cell without any, so the cells of the middle
 // column are edge cells and the faces on x = 1 carry the penalty, those on x = 2 (to the empty
 // cell) none. A field with a kink on x = 1 (grad u . n jumps by 1) costs
-// gamma E h_F |F| per face, the closed form of eq. 6.3; a linear field costs nothing.
+// gamma E h_F |F| per face, the closed form of eq. 6.3; a linear field costs nothing. The middle
+// column's points fill 0.3 of it, under the default limit of 0.5.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -23,12 +24,11 @@ struct Row {
   Mesh mesh;
   MeshTopology topology;
   std::vector<Index> active_cells, node_to_active;
-  std::vector<char> occupied;
-  std::vector<double> modulus;
+  GhostPenaltyCells cells;
 };
 
 /// Three cells of size `size` in a row along axis `along` (0: x, 1: y) from `origin`: the first
-/// two hold points (moduli 7e4 and 2e4), the third none.
+/// two hold points (moduli 7e4 and 2e4; fills 1 and 0.3), the third none.
 Row row_of_three(CellType type, Diagonals diagonals = Diagonals::Alternating,
                  const Vec3& origin = Vec3::Zero(), double size = 1.0, int along = 0) {
   StructuredMeshSpec spec;
@@ -46,18 +46,21 @@ Row row_of_three(CellType type, Diagonals diagonals = Diagonals::Alternating,
     for (Index n : row.mesh.cell_nodes(c)) centre += row.mesh.nodes[n];
     centre /= row.mesh.nodes_per_cell();
     const double position = (centre(along) - origin(along)) / size;
-    row.occupied.push_back(position < 2.0 ? 1 : 0);
+    const bool occupied = position < 2.0, first = position < 1.0;
+    row.cells.occupied.push_back(occupied ? 1 : 0);
     // A stiffer material in the first cell: the face takes the smaller modulus.
-    row.modulus.push_back(row.occupied.back() ? (position < 1.0 ? 7.0e4 : 2.0e4) : 0.0);
+    row.cells.modulus.push_back(occupied ? (first ? 7.0e4 : 2.0e4) : 0.0);
+    row.cells.fill.push_back(occupied ? (first ? 1.0 : 0.3) : 0.0);
   }
   row.node_to_active.resize(row.mesh.num_nodes());
   for (Index n = 0; n < row.mesh.num_nodes(); ++n) row.node_to_active[n] = n;
   return row;
 }
 
-std::vector<NodeBlock> faces_of(const Row& row, double gamma, bool radial = false) {
+std::vector<NodeBlock> faces_of(const Row& row, double gamma, bool radial = false,
+                                double fill_limit = 0.5) {
   return ghost_penalty_faces(row.mesh, row.topology, row.active_cells, row.node_to_active,
-                             row.occupied, row.modulus, gamma, radial);
+                             row.cells, {gamma, fill_limit, radial});
 }
 
 /// sum over faces of u^T G u for the nodal scalar field u(x).
@@ -153,14 +156,29 @@ TEST(GhostPenalty, EdgeCellsNeedNoBufferCells) {
   Row row = row_of_three(CellType::Quad4);
   Row without_buffer = row;
   without_buffer.active_cells = {0, 1};
-  without_buffer.occupied = {1, 1};
-  without_buffer.modulus = {row.modulus[0], row.modulus[1]};
+  without_buffer.cells = {{1, 1}, {row.cells.modulus[0], row.cells.modulus[1]}, {1.0, 0.3}};
   const auto kinked = [](const Vec3& x) { return kink(x, 1.0); };
   EXPECT_NEAR(penalty_energy(without_buffer, faces_of(without_buffer, 0.05), kinked),
               penalty_energy(row, faces_of(row, 0.05), kinked), 1e-9);
-  row.occupied = {1, 1, 1};
-  row.modulus = {7.0e4, 2.0e4, 2.0e4};
+  row.cells = {{1, 1, 1}, {7.0e4, 2.0e4, 2.0e4}, {1.0, 0.3, 0.3}};
   EXPECT_TRUE(faces_of(row, 0.05).empty());
+}
+
+// An edge cell its points fill beyond the limit carries none: its nodes are well supported, and a
+// kink beside it is the body's own (the fan at a footing's edge). A limit of 1 takes every edge
+// cell; a cell filled exactly to the limit counts. (The face on x = 1 of the other tests joins a
+// sparse edge cell to a full cell, which is no edge cell: one sparse side is enough.)
+TEST(GhostPenalty, WellFilledEdgeCellsCarryNone) {
+  const double gamma = 0.05, E = 2.0e4;
+  Row row = row_of_three(CellType::Quad4);
+  row.cells.fill[1] = 0.8;
+  const auto kinked = [](const Vec3& x) { return kink(x, 1.0); };
+  EXPECT_TRUE(faces_of(row, gamma).empty());
+  EXPECT_TRUE(faces_of(row, gamma, false, 0.79).empty());
+  EXPECT_NEAR(penalty_energy(row, faces_of(row, gamma, false, 0.8), kinked), gamma * E,
+              1e-10 * gamma * E);
+  EXPECT_NEAR(penalty_energy(row, faces_of(row, gamma, false, 1.0), kinked), gamma * E,
+              1e-10 * gamma * E);
 }
 
 // Axisymmetry weights the face by its radius (per radian): a vertical face at r = 3, and a

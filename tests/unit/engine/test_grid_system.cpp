@@ -73,8 +73,9 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   settings.kinematics = spec.kinematics;
   settings.empty_cell_modulus = 1e-3 * model->largest_modulus();
   // The ghost penalty (eq. 6.3) couples nodes of neighbouring cells that share no cell: the
-  // pattern must hold them, whatever the stencils.
+  // pattern must hold them, whatever the stencils. Every edge cell carries it, however filled.
   settings.ghost_penalty = 0.05;
+  settings.ghost_penalty_fill = 1.0;
   settings.interpolation = interpolation;
   if (choice) {
     settings.mixed.assign(spec.materials.size(), choice->mixed);
@@ -683,15 +684,16 @@ TEST(GridSystemSparseNodes, OnlyTheNodesThePointsBarelyReachGetTheSpring) {
 // The ghost penalty in the system (eq. 6.3): on the oedometer, whose top row of cells is the
 // body's edge (the buffer row above it is empty), it adds a force linear in the step's
 // displacement, and none for a translation or a uniform strain of the whole grid, which a
-// node spring (eq. 6.2) would resist.
+// node spring (eq. 6.2) would resist; a fill limit below that row's fill removes it.
 TEST(GridSystemGhostPenalty, AddsALinearForceThatLinearFieldsDoNotFeel) {
   const auto spec = testing::read_example("oedometer/oedometer.yaml");
   auto model = build_model(spec);
   const auto force = [&](double gamma, const std::function<double(const Vec3&, int)>& field,
-                         double scale) {
+                         double scale, double fill_limit = 1.0) {
     GridSettings settings;
     settings.kinematics = spec.kinematics;
     settings.ghost_penalty = gamma;
+    settings.ghost_penalty_fill = fill_limit;  // the top row is full: 1 lets it carry the penalty
     GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
     MaterialPoints points = model->points;
     grid.initialise(points);
@@ -716,6 +718,9 @@ TEST(GridSystemGhostPenalty, AddsALinearForceThatLinearFieldsDoNotFeel) {
   EXPECT_LT((doubled - 2.0 * ghost).norm(), 1e-9 * ghost.norm());
   const Vector along_linear = force(gamma, linear, 1.0) - force(0.0, linear, 1.0);
   EXPECT_LT(along_linear.norm(), 1e-9 * ghost.norm());
+  // Under a fill limit below the top row's fill (full) no cell is an edge cell: no force.
+  const Vector limited = force(gamma, bending, 1.0, 0.999) - force(0.0, bending, 1.0);
+  EXPECT_EQ(limited.norm(), 0.0);
 }
 
 // The exact projection of each cell type: its null space is the constant pressures, and on a

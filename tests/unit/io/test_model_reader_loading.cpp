@@ -99,9 +99,11 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_EQ(sparse.numerics.sparse_node_stiffness, 1.0e-2);
   EXPECT_EQ(sparse.numerics.sparse_node_fill, 0.02);
   EXPECT_EQ(defaults.numerics.ghost_penalty, 0.0);  // off
-  const spec::Model ghost =
-      read_model_from_string(kLoadingModel + "numerics: {ghost_penalty: 3.0e-3}\n", "model.yaml");
+  EXPECT_EQ(defaults.numerics.ghost_penalty_fill, 0.5);
+  const spec::Model ghost = read_model_from_string(
+      kLoadingModel + "numerics: {ghost_penalty: 3.0e-3, ghost_penalty_fill: 1}\n", "model.yaml");
   EXPECT_EQ(ghost.numerics.ghost_penalty, 3.0e-3);
+  EXPECT_EQ(ghost.numerics.ghost_penalty_fill, 1.0);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -443,6 +445,13 @@ const std::vector<LoadingCase> kLoadingCases = {
      "ghost_penalty: -0.01",
      "numerics.ghost_penalty",
      ">= 0"},
+    {"ghost_penalty_fill_above_one",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {ghost_penalty: 0.01, ghost_penalty_fill: 1.5}\n"}},
+     "ghost_penalty_fill: 1.5",
+     "numerics.ghost_penalty_fill",
+     "expected a fraction of an edge cell, 0 < fill <= 1, found 1.5"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
