@@ -196,10 +196,22 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.ghost_penalty = read_non_negative(*gamma);
     numerics.ghost_penalty_source = gamma->where();
   }
-  if (auto fill = section.find("sparse_node_fill"))
+  // A fill limit alone would be read and silently do nothing: ask for the stiffness it limits
+  // (an explicit 0 is a deliberate switch-off and keeps the limit).
+  if (auto fill = section.find("sparse_node_fill")) {
     numerics.sparse_node_fill = read_fill_fraction(*fill, "a node's support");
-  if (auto fill = section.find("ghost_penalty_fill"))
+    if (!section.find("sparse_node_stiffness"))
+      fill->fail(
+          "has no effect without numerics.sparse_node_stiffness (the springs it selects nodes "
+          "for, e.g. sparse_node_stiffness: 1.0e-2; docs/theory.md eq. 6.2)");
+  }
+  if (auto fill = section.find("ghost_penalty_fill")) {
     numerics.ghost_penalty_fill = read_fill_fraction(*fill, "an edge cell");
+    if (!section.find("ghost_penalty"))
+      fill->fail(
+          "has no effect without numerics.ghost_penalty (the penalty it selects edge cells for, "
+          "e.g. ghost_penalty: 1.0e-2; docs/theory.md eq. 6.3)");
+  }
   if (auto floor = section.find("pressure_stabilisation_floor"))
     numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {

@@ -104,6 +104,11 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
       kLoadingModel + "numerics: {ghost_penalty: 3.0e-3, ghost_penalty_fill: 1}\n", "model.yaml");
   EXPECT_EQ(ghost.numerics.ghost_penalty, 3.0e-3);
   EXPECT_EQ(ghost.numerics.ghost_penalty_fill, 1.0);
+  // An explicit 0 switches the penalty off and keeps the limit (a fill alone is refused below).
+  const spec::Model off = read_model_from_string(
+      kLoadingModel + "numerics: {ghost_penalty: 0, ghost_penalty_fill: 1}\n", "model.yaml");
+  EXPECT_EQ(off.numerics.ghost_penalty, 0.0);
+  EXPECT_EQ(off.numerics.ghost_penalty_fill, 1.0);
 }
 
 TEST(ModelReaderLoading, ReadsLayersK0NodeSetsAndGridMotions) {
@@ -452,6 +457,21 @@ const std::vector<LoadingCase> kLoadingCases = {
      "ghost_penalty_fill: 1.5",
      "numerics.ghost_penalty_fill",
      "expected a fraction of an edge cell, 0 < fill <= 1, found 1.5"},
+    // A fill limit without the stiffness it limits would otherwise be ignored silently.
+    {"ghost_penalty_fill_without_penalty",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {ghost_penalty_fill: 0.3}\n"}},
+     "ghost_penalty_fill: 0.3",
+     "numerics.ghost_penalty_fill",
+     "has no effect without numerics.ghost_penalty"},
+    {"sparse_node_fill_without_stiffness",
+     {{"    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n",
+       "    - {quantity: reaction, boundary: footing_base, component: y, name: footing_force}\n"
+       "numerics: {empty_cell_stiffness: 1.0e-4, sparse_node_fill: 0.1}\n"}},
+     "sparse_node_fill: 0.1",
+     "numerics.sparse_node_fill",
+     "has no effect without numerics.sparse_node_stiffness"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModelReaderLoading, ModelReaderLoadingMalformed,
