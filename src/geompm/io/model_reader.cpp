@@ -198,20 +198,21 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   }
   // A fill limit alone would be read and silently do nothing: ask for the stiffness it limits
   // (an explicit 0 is a deliberate switch-off and keeps the limit).
-  if (auto fill = section.find("sparse_node_fill")) {
-    numerics.sparse_node_fill = read_fill_fraction(*fill, "a node's support");
-    if (!section.find("sparse_node_stiffness"))
-      fill->fail(
-          "has no effect without numerics.sparse_node_stiffness (the springs it selects nodes "
-          "for, e.g. sparse_node_stiffness: 1.0e-2; docs/theory.md eq. 6.2)");
-  }
-  if (auto fill = section.find("ghost_penalty_fill")) {
-    numerics.ghost_penalty_fill = read_fill_fraction(*fill, "an edge cell");
-    if (!section.find("ghost_penalty"))
-      fill->fail(
-          "has no effect without numerics.ghost_penalty (the penalty it selects edge cells for, "
-          "e.g. ghost_penalty: 1.0e-2; docs/theory.md eq. 6.3)");
-  }
+  const auto read_fill_limit = [&section](const char* key, const char* stiffness, const char* what,
+                                          const char* equation, double& limit) {
+    if (auto fill = section.find(key)) {
+      limit = read_fill_fraction(*fill, what);
+      if (!section.find(stiffness))
+        fill->fail(fmt::format(
+            "has no effect without numerics.{0}, the stiffness it limits (e.g. {0}: 1.0e-2; "
+            "docs/theory.md eq. {1})",
+            stiffness, equation));
+    }
+  };
+  read_fill_limit("sparse_node_fill", "sparse_node_stiffness", "a node's support", "6.2",
+                  numerics.sparse_node_fill);
+  read_fill_limit("ghost_penalty_fill", "ghost_penalty", "an edge cell", "6.3",
+                  numerics.ghost_penalty_fill);
   if (auto floor = section.find("pressure_stabilisation_floor"))
     numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {

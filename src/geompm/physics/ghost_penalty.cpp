@@ -96,24 +96,24 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
   std::vector<char> holds_points(mesh.num_cells(), 0);
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
     active_of[active_cells[ci]] = static_cast<Index>(ci);
-    holds_points[active_cells[ci]] = cells.occupied[ci];
+    holds_points[active_cells[ci]] = cells.fill[ci] > 0.0;
   }
   // Edge cells: occupied, sharing a node with a cell of the mesh that holds no point (active or
   // not, so that it works without buffer cells too), and filled at most to the limit. A node on
   // the mesh's boundary has no cell beyond it: a body filling the mesh has no edge there.
   std::vector<char> edge(active_cells.size(), 0);
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
-    if (!cells.occupied[ci] || cells.fill[ci] > settings.fill_limit) continue;
+    if (!(cells.fill[ci] > 0.0) || cells.fill[ci] > settings.fill_limit) continue;
     for (Index nb : topology.cell_neighbours.row(active_cells[ci]))
       if (!holds_points[nb]) edge[ci] = 1;
   }
   std::vector<NodeBlock> faces;
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
-    if (!cells.occupied[ci]) continue;
+    if (!(cells.fill[ci] > 0.0)) continue;
     const Index a = active_cells[ci];
     for (Index b : topology.cell_neighbours.row(a)) {
       const Index cj = active_of[b];
-      if (b <= a || cj < 0 || !cells.occupied[cj] || !(edge[ci] || edge[cj])) continue;
+      if (b <= a || cj < 0 || !(cells.fill[cj] > 0.0) || !(edge[ci] || edge[cj])) continue;
       const auto nodes_a = mesh.cell_nodes(a), nodes_b = mesh.cell_nodes(b);
       std::vector<Vec3> corners;
       for (Index node : nodes_a)

@@ -9,6 +9,7 @@
 // the step's displacement increment, like the empty-cell stiffness.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "geompm/core/types.hpp"
@@ -18,12 +19,12 @@
 
 namespace geompm {
 
-/// What the penalty needs to know of each active cell of the step (indexed like `active_cells`;
-/// a cell that is not active holds no points).
+/// What the penalty needs to know of each active cell of the step, as views of the caller's
+/// arrays (indexed like `active_cells`; a cell that is not active holds no points). A cell holds
+/// points exactly when its fill is above 0, since every point has a positive volume.
 struct GhostPenaltyCells {
-  std::vector<char> occupied;   // 1 if the cell holds points
-  std::vector<double> modulus;  // the largest Young's modulus of its points
-  std::vector<double> fill;     // the fraction of its measure its points' volumes fill, <= 1
+  std::span<const double> modulus;  // the largest Young's modulus of its points
+  std::span<const double> fill;     // the fraction of its measure its points' volumes fill, <= 1
 };
 
 /// How much, and where: `gamma` scales the face's modulus; an edge cell counts only while its

@@ -433,19 +433,17 @@ void GridSystem::sparse_node_springs_typed(const MaterialPoints& points) {
 void GridSystem::ghost_penalty_blocks(const MaterialPoints& points) {
   if (settings_.ghost_penalty <= 0.0) return;
   const Index n_active = static_cast<Index>(active_cells_.size());
-  GhostPenaltyCells cells{std::vector<char>(n_active, 0), std::vector<double>(n_active, 0.0),
-                          cell_fill_};
+  std::vector<double> modulus(n_active, 0.0);
   for (Index ci = 0; ci < n_active; ++ci)
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
-      cells.occupied[ci] = 1;
       // The point's own Young's modulus E = 9 K G / (3 K + G): it varies in space where s_u does.
       const ElasticModuli m = materials_[points.material[p]]->elastic_moduli(points.internal[p]);
       const double E =
           3.0 * m.bulk + m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
-      cells.modulus[ci] = std::max(cells.modulus[ci], E);
+      modulus[ci] = std::max(modulus[ci], E);
     }
   std::vector<NodeBlock> faces =
-      ghost_penalty_faces(mesh_, topology_, active_cells_, node_to_active_, cells,
+      ghost_penalty_faces(mesh_, topology_, active_cells_, node_to_active_, {modulus, cell_fill_},
                           {settings_.ghost_penalty, settings_.ghost_penalty_fill,
                            settings_.kinematics == Kinematics::Axisymmetric});
   step_blocks_.insert(step_blocks_.end(), std::make_move_iterator(faces.begin()),
