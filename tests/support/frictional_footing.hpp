@@ -54,7 +54,7 @@ struct Push {
   bool stopped = false;
   double at(double settlement) const {
     for (std::size_t k = 1; k < s.size(); ++k)
-      if (s[k] >= settlement) {
+      if (s[k] >= settlement - 1e-9) {
         const double a = (settlement - s[k - 1]) / (s[k] - s[k - 1]);
         return q[k - 1] + a * (q[k] - q[k - 1]);
       }
@@ -62,6 +62,15 @@ struct Push {
     return NAN;
   }
   double largest() const { return *std::max_element(q.begin(), q.end()); }
+  /// The mean of q over the settlements from..to (the points of the history in between).
+  double mean(double from, double to) const {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (s[k] >= from - 1e-9 && s[k] <= to + 1e-9) sum += q[k], ++count;
+    EXPECT_GT(count, 0) << "no point of the history between " << from << " and " << to << " B";
+    return sum / count;
+  }
 };
 
 inline Push run_push(const std::string& text, const std::string& name, double scale) {

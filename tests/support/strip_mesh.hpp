@@ -36,4 +36,15 @@ inline std::string strip_mesh(std::string text, int n) {
   return text;
 }
 
+/// `text` (a model on a generated quad4 mesh, 4 points per cell) on tri3 cells with 3 points each:
+/// one diagonal per rectangle, alternating (the generator's default), or both crossed
+/// (docs/theory.md §15), as scripts/validation_report.py's `on_triangles` makes it.
+inline std::string on_triangles(std::string text, bool crossed) {
+  text = replace_once(text, "cell: quad4",
+                      crossed ? "cell: tri3\n    diagonals: crossed" : "cell: tri3");
+  for (std::size_t at; (at = text.find("points_per_cell: 4")) != std::string::npos;)
+    text.replace(at, 18, "points_per_cell: 3");
+  return text;
+}
+
 }  // namespace geompm::testing

@@ -39,36 +39,11 @@ enum class Mesh { Quad4, Alternating, Crossed };
 /// tri3 cells with 3 points each, as scripts/validation_report.py's `meshed` makes it.
 std::string meshed(std::string text, int n, Mesh mesh) {
   text = testing::strip_mesh(testing::replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}"), n);
-  if (mesh == Mesh::Quad4) return text;
-  text = testing::replace_once(
-      text, "cell: quad4",
-      mesh == Mesh::Crossed ? "cell: tri3\n    diagonals: crossed" : "cell: tri3");
-  for (std::size_t at; (at = text.find("points_per_cell: 4")) != std::string::npos;)
-    text.replace(at, 18, "points_per_cell: 3");
-  return text;
+  return mesh == Mesh::Quad4 ? text : testing::on_triangles(text, mesh == Mesh::Crossed);
 }
 
-struct Curve {
-  std::vector<double> s, q;  // settlement / B since the push's start, q in the reference's units
-  int most_newton_iterations = 0;
-  double at(double settlement) const {
-    for (std::size_t k = 1; k < s.size(); ++k)
-      if (s[k] >= settlement - 1e-9) {
-        const double a = (settlement - s[k - 1]) / (s[k] - s[k - 1]);
-        return q[k - 1] + a * (q[k] - q[k - 1]);
-      }
-    ADD_FAILURE() << "the run did not reach a settlement of " << settlement << " B";
-    return NAN;
-  }
-  double mean(double from, double to) const {
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = 0; k < s.size(); ++k)
-      if (s[k] >= from - 1e-9 && s[k] <= to + 1e-9) sum += q[k], ++count;
-    EXPECT_GT(count, 0);
-    return sum / count;
-  }
-};
+// The push of a run: settlement, q, Newton's most iterations in a step; at() and mean().
+using Curve = testing::frictional_footing::Push;
 
 /// Runs the model (it must finish) and returns its push: the phase that starts at `start`.
 Curve run_push(const std::string& text, const std::string& name, double scale, double start) {
