@@ -4,8 +4,10 @@
 // Reissner's (1924) exact N_q = e^(pi tan phi) tan^2(45 + phi/2) = 18.40 (associated flow,
 // phi = psi = 30 deg, smooth or rough alike in weightless soil). The same meshes, material and
 // Newton settings carry the self-weight footing of §11 to about 12 % above Martin's N_gamma, so
-// that error is not the triangles' treatment of dilatant flow.
-// About 100 s per footing on one core, most of it on h = B/40.
+// that error is not the triangles' treatment of dilatant flow; and the same footing on Tresca clay
+// with self-weight gains only the overburden of its embedment, so the self-weight is consistent
+// where the strength does not follow it.
+// About 100 s per N_q footing on one core, most of it on h = B/40; the Tresca case a few seconds.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -76,6 +78,46 @@ TEST(DilatancyOnTriangles, SmoothSurchargeFootingConvergesToPrandtlReissner) {
 TEST(DilatancyOnTriangles, RoughSurchargeFootingConvergesToPrandtlReissner) {
   // Measured: 22.26, 20.39, 19.43 (+21.0, +10.8, +5.6 %), order 0.95, extrapolated 18.40.
   check_converges_to_prandtl_reissner(true, "rough");
+}
+
+/// The self-weight footing of examples/frictional_footing/frictional_footing_ngamma.yaml with its
+/// soil as Tresca clay (s_u = 1 kPa, E = 1e4 s_u, nu = 0.49, K0 = 1) of unit weight gamma (B = 1 m)
+/// on crossed triangles (h = B/10), pushed 0.005 B (validation.md §13, tresca_weight_text).
+std::string tresca_with_weight(double gamma) {
+  using testing::replace_once;
+  auto t = replace_once(testing::example_text("frictional_footing/frictional_footing_ngamma.yaml"),
+                        "vtk: {every: 10}", "vtk: {every: 0}");
+  t = replace_once(t,
+                   "sand: {model: mohr_coulomb, c: 0.01, phi: 30, psi: 30, E: 50000, nu: 0.3, "
+                   "density: 2}",
+                   "sand: {model: tresca, su: 1, E: 10000, nu: 0.49, density: " +
+                       std::to_string(gamma / 10) + "}");
+  t = replace_once(t, "E: 10000000, nu: 0.2", "E: 2000000, nu: 0.2");
+  t = replace_once(t, "k0_procedure: {bodies: [soil]}", "k0_procedure: {bodies: [soil], K0: 1.0}");
+  t = replace_once(t, "\"-0.007*t\"", "\"-0.005*t\"");
+  t = replace_once(t, "newton: {predictor: extrapolated, max_iterations: 20,",
+                   "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,");
+  return testing::on_triangles(testing::strip_mesh(t, 5), true);
+}
+
+TEST(DilatancyOnTriangles, SelfWeightAddsOnlyTheOverburdenInAnIsochoricMechanism) {
+  // With a flat surface gravity does no work in an isochoric mechanism, so the rigid-plastic
+  // Tresca footing carries the same whatever gamma; embedded by s it gains about the overburden
+  // gamma s (q_u = N_c s_u + gamma D: N_q = 1 at phi = 0), a little more for the heave beside it.
+  // Measured with gamma B / s_u = 100: 1.11, 1.20, 1.38 times gamma s at 0.001, 0.002, 0.005 B.
+  constexpr double kGamma = 100.0;
+  const auto weightless = run_push(tresca_with_weight(0.0), "tresca_weightless", kSurchargeScale);
+  const auto heavy = run_push(tresca_with_weight(kGamma), "tresca_weight_100", kSurchargeScale);
+  ASSERT_FALSE(weightless.stopped);
+  ASSERT_FALSE(heavy.stopped);
+  for (const double s : {0.001, 0.002, 0.005}) {
+    const double gained = (heavy.at(s) - weightless.at(s)) / (kGamma * s);
+    std::printf(
+        "[Tresca, gamma B / s_u = 100, h = B/10] at %.3f B: %.3f against %.3f, %.2f gamma s\n", s,
+        heavy.at(s), weightless.at(s), gained);
+    EXPECT_GT(gained, 1.0);
+    EXPECT_LT(gained, 1.5);
+  }
 }
 
 }  // namespace
