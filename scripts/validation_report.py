@@ -4615,7 +4615,7 @@ def section_earth_pressure(args, work):
       "switching between elastic and plastic in the first nine. "
       "So the self-weight, the K0 procedure and the returns are right where the mechanism is "
       "uniform; what keeps N_γ above Martin's value (§9, §11) is the discretisation of its "
-      "mechanism. Asserted in `tests/verification/test_earth_pressure.cpp`.")
+      "mechanism (§13 narrows it further). Asserted in `tests/verification/test_earth_pressure.cpp`.")
     w("")
     return lines
 
