@@ -2561,22 +2561,25 @@ def fmt(v, d=2):
 NQ_STIFF_E, NQ_STIFF_PUSH = 100000, 0.0015
 
 
+def nq_stiff_text(n):
+    """The N_q example in the rigid-plastic limit on the strip mesh with n cells under B/2: sand
+    E = NQ_STIFF_E q0 pushed NQ_STIFF_PUSH, standard MPM (nothing crosses a cell here; the
+    example's GIMP is for the heave above the surface) and up to 20 Newton iterations (the stiff
+    soil's steps take 13-14 on h = B/40), no VTK files."""
+    t = frictional_mesh(example("frictional_footing/frictional_footing_nq.yaml"), n)
+    t = replace_once(t, "E: 5000,", f"E: {NQ_STIFF_E},")
+    t = replace_once(replace_once(t, "interpolation: gimp, ", ""),
+                     "line_search: 6, max_iterations: 10,", "line_search: 6, max_iterations: 20,")
+    t = replace_once(t, '"-0.01*t"', f'"-{NQ_STIFF_PUSH}*t"')
+    return replace_once(t, "vtk: {every: 10}", "vtk: {every: 0}")
+
+
 def nq_rigid_plastic_limit(runner, corr):
     lines = []
     w = lines.append
     levels = (5, 10, 20)
 
-    def text(n):
-        t = frictional_mesh(example("frictional_footing/frictional_footing_nq.yaml"), n)
-        t = replace_once(t, "E: 5000,", f"E: {NQ_STIFF_E},")
-        # Standard MPM (nothing crosses a cell here; the example's GIMP is for the heave above the
-        # surface) and up to 20 Newton iterations (the stiff soil's steps take 13-14 on h = B/40).
-        t = replace_once(replace_once(t, "interpolation: gimp, ", ""),
-                         "line_search: 6, max_iterations: 10,", "line_search: 6, max_iterations: 20,")
-        t = replace_once(t, '"-0.01*t"', f'"-{NQ_STIFF_PUSH}*t"')
-        return replace_once(t, "vtk: {every: 10}", "vtk: {every: 0}")
-
-    runs = runner.batch({f"nq_stiff_{n}": text(n) for n in levels})
+    runs = runner.batch({f"nq_stiff_{n}": nq_stiff_text(n) for n in levels})
     end, last = NQ_STIFF_PUSH, NQ_STIFF_PUSH / 5
     q_end, creep = [], []
     for n in levels:
@@ -4633,17 +4636,11 @@ NQ_TRI_CONTACT = {"smooth": "smooth (the example's)", "rough": "rough"}
 
 
 def nq_triangle_text(n, contact="smooth", rounding=NQ_TRI_ROUND_A):
-    """The N_q example stiff (E = NQ_STIFF_E q0) and pushed NQ_STIFF_PUSH on crossed triangles,
-    with standard MPM, the rounded surface (`rounding` = a; 0: the sharp cone) and the Newton
-    settings of ngamma_rounded_text; `contact` rough drives the footing's points in x too."""
-    t = frictional_mesh(example("frictional_footing/frictional_footing_nq.yaml"), n)
-    t = replace_once(t, "E: 5000,", f"E: {NQ_STIFF_E},")
-    t = replace_once(t, "interpolation: gimp, ", "")
-    t = replace_once(t, "newton: {line_search: 6, max_iterations: 10,",
-                     "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6, "
-                     "max_iterations: 20,")
-    t = replace_once(t, '"-0.01*t"', f'"-{NQ_STIFF_PUSH}*t"')
-    t = replace_once(t, "vtk: {every: 10}", "vtk: {every: 0}")
+    """nq_stiff_text on crossed triangles, with the rounded surface (`rounding` = a; 0: the sharp
+    cone) and the Newton start of ngamma_rounded_text; `contact` rough drives the footing's points
+    in x too."""
+    t = replace_once(nq_stiff_text(n), "newton: {line_search: 6,",
+                     "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6,")
     if rounding:
         t = replace_once(t, "c: 0.01, phi: 30, psi: 30,",
                          f"c: 0.01, phi: 30, psi: 30, apex_rounding: {rounding:g}, "
@@ -4733,14 +4730,13 @@ def rigid_footings_note(runs, ng_mean, share, labels):
                else "."))
 
 
-def empty_cells_note(runs, ng, labels):
+def empty_cells_note(runs, ng_mean, ng, labels):
     """§13: the steel block's N_gamma rows with the N_q runs' empty-cell stiffness."""
     soft = [runs[f"ng_soil_block_{n}"] for n in NQ_TRI_MESHES]
     cells = []
     for label, r, stiff in zip(labels, soft, ng):
         if r.ok:
-            x, q = push_curve(r, NG_FORCE_SCALE)
-            value = ngamma_window_mean(NG_STIFFER * x, q)
+            value = ng_mean(r)
             cells.append(f"{label} {fmt(value)} ({(value / stiff - 1) * 100:+.1f} %)")
         else:
             x, q = push_curve(r, NG_FORCE_SCALE) if r.h is not None else ([float("nan")], None)
@@ -4754,12 +4750,6 @@ def empty_cells_note(runs, ng, labels):
             "almost no strength, and carry part of what these meshes leave above Martin's value; "
             "without that stiffness the finest mesh does not get through, so how much of the "
             "extrapolated excess it accounts for is not measured.")
-
-
-def successive_ratios(values):
-    """The ratios of successive differences of a sequence on meshes halving h (2 at first order)."""
-    d = [a - b for a, b in zip(values, values[1:])]
-    return [a / b for a, b in zip(d, d[1:]) if b != 0]
 
 
 def section_dilatancy_on_triangles(args, work):
@@ -4844,7 +4834,7 @@ def section_dilatancy_on_triangles(args, work):
         ok = ex is not None and abs(ex[1] / NQ_30 - 1) <= 0.05
         verdicts.append(
             f"{label}: " + " → ".join(fmt(v) for v in means[c]) + " on h = " + ", ".join(labels)
-            + (f", successive differences in the ratio {successive_ratios(means[c])[0]:.2f}, "
+            + (f", successive differences in the ratio 2^order = {2 ** ex[0]:.2f}, "
                f"observed order {ex[0]:.2f}, Richardson extrapolation h → 0 {ex[1]:.2f} "
                f"({(ex[1] / NQ_30 - 1) * 100:+.1f} % from {NQ_30:.2f}): {verdict(ok)}"
                if ex else f": no extrapolation (a run stopped or the values are not monotonic): "
@@ -4869,7 +4859,7 @@ def section_dilatancy_on_triangles(args, work):
     w("*The same meshes under self-weight* (§11's rounded N_γ rows, rough steel block, c = "
       f"{NG_ROUND_C:g} kPa, its reference {NG_ROUGH} + 2cN_c/(γB) = {reference:.2f}): "
       + " → ".join(fmt(v) for v in ng) + " on h = " + ", ".join(labels)
-      + (f", successive differences in the ratio {successive_ratios(ng)[0]:.2f}, observed order "
+      + (f", successive differences in the ratio 2^order = {2 ** ex[0]:.2f}, observed order "
          f"{ex[0]:.2f}, Richardson extrapolation {ex[1]:.2f} ({(ex[1] / reference - 1) * 100:+.1f} % "
          f"from {reference:.2f})" if ex else ", no extrapolation")
       + (". Both converge at observed orders of "
@@ -4881,7 +4871,7 @@ def section_dilatancy_on_triangles(args, work):
          "the self-weight, a strength rising from zero at the surface, where the same rounding "
          "(a = 1.5 c) then matters more than under a surcharge (§11, *What the rounding costs*)" if nq_reached and ng_above else "")
       + ". " + rigid_footings_note(runs, ng_mean, share, labels) + " "
-      + empty_cells_note(runs, ng, labels)
+      + empty_cells_note(runs, ng_mean, ng, labels)
       + " How the N_γ limit of a mesh moves with the initial stress, the elastic constants, the "
       f"step and the points per triangle (h = B/10, the mean over the window against {fmt(ng[0])}): "
       + "; ".join(f"{label}: {fmt(ng_mean(runs[f'ng_invariance_{i}']))} "

@@ -113,6 +113,22 @@ inline const double kCohesionShare = 0.01 * kNc;
 // N_gamma = q / (gamma B / 2) = 2 x 2 x force / (20 x 1).
 inline constexpr double kGammaScale = -0.2;
 
+/// The N_q example in the rigid-plastic limit (docs/validation.md §9; scripts/validation_report.py
+/// nq_stiff_text): sand E = 1e5 q0 instead of 5000 q0, pushed 0.0015 B so that the mechanism forms
+/// before the second row of points under the footing crosses its cell; standard MPM (nothing
+/// crosses a cell, so the example's GIMP, for the heave above the surface, is not needed) and up
+/// to 20 Newton iterations a step (the stiff soil's steps need 13-14 on h = B/40); n cells under
+/// the half-width; no VTK files.
+inline std::string nq_rigid_plastic_model(int n) {
+  auto text =
+      replace_once(replace_once(example_text("frictional_footing/frictional_footing_nq.yaml"),
+                                "vtk: {every: 10}", "vtk: {every: 0}"),
+                   "E: 5000,", "E: 100000,");
+  text = replace_once(replace_once(text, "interpolation: gimp, ", ""),
+                      "line_search: 6, max_iterations: 10,", "line_search: 6, max_iterations: 20,");
+  return strip_mesh(replace_once(text, "\"-0.01*t\"", "\"-0.0015*t\""), n);
+}
+
 // N_q read as docs/validation.md §9 reads it: the surcharge footing on the strip mesh with n cells
 // under the half-width, pushed to 0.0105 B, at a settlement of 0.01 B, less the cohesion's share.
 struct NqReading {

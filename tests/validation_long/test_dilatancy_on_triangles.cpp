@@ -26,25 +26,19 @@ namespace {
 
 using namespace testing::frictional_footing;
 
-/// The N_q example as validation.md §13 runs it (scripts/validation_report.py,
-/// nq_triangle_text): sand 20 times stiffer (E = 1e5 q0) pushed 0.0015 B, before any point
-/// crosses a cell, so standard MPM instead of the example's GIMP; the apex rounded (a = 1.5 c,
-/// docs/materials.md §3.6) and Newton started from the last step's increment with backtracking,
-/// as the N_gamma rows of §11; on crossed triangles with n cells under the half-width.
+/// The N_q example in the rigid-plastic limit of §9 (nq_rigid_plastic_model) as validation.md §13
+/// runs it (scripts/validation_report.py, nq_triangle_text): the apex rounded (a = 1.5 c,
+/// docs/materials.md §3.6) and Newton started from the last step's increment, as the N_gamma rows
+/// of §11; on crossed triangles with n cells under the half-width.
 std::string nq_on_crossed_triangles(int n, bool rough) {
   using testing::replace_once;
-  auto t = replace_once(testing::example_text("frictional_footing/frictional_footing_nq.yaml"),
-                        "vtk: {every: 10}", "vtk: {every: 0}");
-  t = replace_once(t, "E: 5000,", "E: 100000,");
-  t = replace_once(t, "interpolation: gimp, ", "");
-  t = replace_once(t, "newton: {line_search: 6, max_iterations: 10,",
-                   "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6, "
-                   "max_iterations: 20,");
-  t = replace_once(t, "\"-0.01*t\"", "\"-0.0015*t\"");
+  auto t =
+      replace_once(nq_rigid_plastic_model(n), "newton: {line_search: 6,",
+                   "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6,");
   t = replace_once(t, "c: 0.01, phi: 30, psi: 30,",
                    "c: 0.01, phi: 30, psi: 30, apex_rounding: 0.015, lode_transition: 29,");
   if (rough) t = replace_once(t, "displacement: [~, ", "displacement: [0, ");
-  return testing::on_triangles(testing::strip_mesh(t, n), true);
+  return testing::on_triangles(t, true);
 }
 
 /// N_q on h = B/10, B/20, B/40: the mean over 0.001-0.0015 B, where the curves have levelled
