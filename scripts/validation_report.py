@@ -3790,9 +3790,14 @@ def meshed(text, mesh):
 NG_STIFF_E, NG_STIFF_PUSH, NG_STIFF_READ = 1000000, 0.002, (0.0015, 0.002)
 
 
+NG_RIGID_SHARP_EMPTY_CELLS = "1.0e-4"
+
+
 def rigid_footing_instead(text, contact):
     """The N_gamma example with a rigid footing (penalty contact at the points, docs/theory.md §13)
-    of the steel block's footprint instead of the block: `contact` smooth or rough."""
+    of the steel block's footprint instead of the block: `contact` smooth or rough. The steel goes
+    too (a material no point carries would not change the run either: docs/theory.md eq. 6.1)."""
+    text = replace_once(text, "  steel: {model: linear_elastic, E: 10000000, nu: 0.2, density: 0}\n", "")
     text = replace_once(text, "  footing: {material: steel, region: {box: {min: [0, 5], max: [0.5, 5.1]}}, "
                               "points_per_cell: 4}\n", "")
     text = replace_once(text, "point_sets:\n  footing: {body: footing, region: all}\n", "")
@@ -3807,9 +3812,14 @@ def ngamma_stiff_text(n, mesh, footing="block", stiffer=1):
     same curve against settlement x stiffer, if the soil is rigid-plastic)."""
     text = example("frictional_footing/frictional_footing_ngamma.yaml")
     if footing != "block":
-        text = rigid_footing_instead(text, footing)
+        # The empty cells' stiffness of the rigid-footing examples (§4 (iv)): with 1e-6 of the
+        # soil's E, the sharp cone's air nodes beside the footing's edge keep Newton's corrections
+        # from converging (the rough footing on h = B/10 stops at 0.00048 B).
+        text = replace_once(rigid_footing_instead(text, footing), "empty_cell_stiffness: 1.0e-6",
+                            f"empty_cell_stiffness: {NG_RIGID_SHARP_EMPTY_CELLS}")
     text = replace_once(text, "E: 50000, nu: 0.3", f"E: {stiffer * NG_STIFF_E}, nu: 0.3")
-    text = replace_once(text, "E: 10000000, nu: 0.2", f"E: {200 * stiffer * NG_STIFF_E}, nu: 0.2")
+    if footing == "block":
+        text = replace_once(text, "E: 10000000, nu: 0.2", f"E: {200 * stiffer * NG_STIFF_E}, nu: 0.2")
     text = replace_once(text, '"-0.007*t"', f'"-{NG_STIFF_PUSH / stiffer:g}*t"')
     text = replace_once(text, "newton: {predictor: extrapolated, max_iterations: 20,",
                         "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,")
@@ -3855,6 +3865,9 @@ def ngamma_rounded_text(n, times=1, footing="block"):
                         "c: 0.01, phi: 30, psi: 30,",
                         f"c: {times * NG_ROUND_C:g}, phi: 30, psi: 30, "
                         f"apex_rounding: {times * NG_ROUND_A:g}, lode_transition: {NG_ROUND_LODE},")
+    if footing != "block":  # rounded, the rigid footings run through with the default 1e-6
+        text = replace_once(text, f"empty_cell_stiffness: {NG_RIGID_SHARP_EMPTY_CELLS}",
+                            "empty_cell_stiffness: 1.0e-6")
     return replace_once(text, "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,",
                         "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6, "
                         "max_iterations: 20,")
@@ -4697,10 +4710,10 @@ def tresca_weight_text(n, gamma_b):
 # The rounded N_gamma rows with rigid footings of the block's footprint (docs/theory.md §13) and
 # Martin's (2005) value for each base.
 NG_RIGID = {"smooth": NG_SMOOTH, "rough": NG_ROUGH}
-# `empty_cell_stiffness` is relative to the largest Young's modulus of the materials, in the N_gamma
-# models the steel's, 200 times the soil's (used by the block, or only listed beside a rigid
-# footing): 1e-6 of it is 2e-4 of the soil's. The N_q runs have 1e-6 of the soil's; like for like
-# the N_gamma model takes 5e-9 of the steel's.
+# `empty_cell_stiffness` is relative to the largest Young's modulus of the materials the points
+# carry, in the steel block's N_gamma models the steel's, 200 times the soil's: 1e-6 of it is 2e-4
+# of the soil's. The N_q runs and the rigid footings' N_gamma runs (no steel) have 1e-6 of the
+# soil's; like for like the steel block's model takes 5e-9 of the steel's.
 NG_SOIL_EMPTY_CELLS = "5.0e-9"
 
 
@@ -4742,9 +4755,10 @@ def empty_cells_note(runs, ng_mean, ng, labels):
             x, q = push_curve(r, NG_FORCE_SCALE) if r.h is not None else ([float("nan")], None)
             cells.append(f"{label} stopped at {NG_STIFFER * x[-1]:.5f} B ({stop_reason(r)})")
     return ("The empty parts of cells take 10⁻⁶ of the largest Young's modulus of the materials "
-            "(`empty_cell_stiffness`), in these models the steel's, 200 times the soil's (also "
-            "beside the rigid footings, whose models still list the steel, unused), where the N_q "
-            "runs have 10⁻⁶ of the soil's. With 10⁻⁶ of the soil's (`empty_cell_stiffness: "
+            "the points carry (`empty_cell_stiffness`), in the steel block's models the steel's, 200 "
+            "times the soil's, where the N_q runs and the rigid footings above have 10⁻⁶ of the "
+            "soil's (until November 2026 a listed material counted too, and the rigid footings' "
+            "models listed the steel). With 10⁻⁶ of the soil's (`empty_cell_stiffness: "
             f"{NG_SOIL_EMPTY_CELLS}`) the steel block carries " + ", ".join(cells)
             + ": the stiffer empty cells resist the heave beside the footing, where the soil has "
             "almost no strength, and carry part of what these meshes leave above Martin's value; "

@@ -84,7 +84,9 @@ TEST(FrictionalFootingValidation, SurchargeNqInTheRigidPlasticLimitConvergesToPr
     q.push_back(push.q.back() - kCohesionShare);
     std::printf("[N_q, E = 1e5 q0, h = B/%d] %.2f at 0.0015 B (%+.1f %%)\n", 2 * n, q.back(),
                 (q.back() / kNq - 1) * 100);
-    EXPECT_GT(q.back(), kNq);  // associated flow on low-order cells: an upper bound
+    // Above N_q as measured (a kinematic discretisation of associated flow approaches it from
+    // above; with moving points MPM has no bound theorem, so this is a check, not a property).
+    EXPECT_GT(q.back(), kNq);
   }
   EXPECT_LT(q[1], q[0]);
   EXPECT_LT(q[2], q[1]);

@@ -138,8 +138,9 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
   // domain tops, docs/theory.md §13) instead of the steel block. On triangles the footing touches
   // the top faces of the points' sub-cells; a smooth base lets the soil slide, and Martin's exact
   // solutions put the rough footing's N_gamma at 14.75 / 7.65 = 1.93 times the smooth one's.
-  // Measured (docs/validation.md §11, h = B/10): 24.14 rough (the steel block: 24.17) and 12.31
-  // smooth, both about 62 % above Martin's values.
+  // Measured (h = B/10): 24.03 rough (the steel block: 24.17) and 12.11 smooth, both about 60 %
+  // above Martin's values (docs/validation.md §11 has 24.14 and 12.31, with the empty cells at
+  // 2e-4 of the soil's E, when the listed steel set their scale).
   const auto text = [](const std::string& contact) {
     auto t = ngamma_rigid_plastic(1);
     t = testing::replace_once(t,
@@ -155,6 +156,11 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
                               "{quantity: displacement, footing: footing,");
     t = testing::replace_once(t, "{quantity: reaction, point_set: footing,",
                               "{quantity: reaction, footing: footing,");
+    // The empty cells' stiffness of the rigid-footing examples (docs/validation.md §4 (iv)): with
+    // 1e-6 of the soil's E the air nodes beside the footing's edge keep Newton's corrections from
+    // converging (the rough run stops at 0.00048 B). The steel, which no body uses now, is left
+    // listed: it does not scale that stiffness (docs/theory.md eq. 6.1).
+    t = testing::replace_once(t, "empty_cell_stiffness: 1.0e-6", "empty_cell_stiffness: 1.0e-4");
     return meshed(t, 5, Mesh::Crossed);
   };
   const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", -0.2, 1.0);

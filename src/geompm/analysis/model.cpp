@@ -31,8 +31,13 @@ int Model::point_set_bit(const std::string& name) const {
 }
 
 double Model::largest_modulus() const {
+  // Of the materials some point carries: a material only listed (or whose points have all left
+  // the mesh) must not stiffen the empty cells beside the soil.
+  std::vector<char> carried(materials.size(), 0);
+  for (const Index m : points.material) carried[static_cast<std::size_t>(m)] = 1;
   double E = 0.0;
-  for (const auto& m : materials) E = std::max(E, m->reference_modulus());
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    if (carried[m]) E = std::max(E, materials[m]->reference_modulus());
   return E;
 }
 

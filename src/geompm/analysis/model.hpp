@@ -35,6 +35,8 @@ struct Model {
   Kinematics kinematics() const { return spec.kinematics; }
   std::vector<const Material*> material_pointers() const;
   int point_set_bit(const std::string& name) const;  // -1 if unknown
+  /// The largest reference modulus of the materials the points carry (the scale of the empty
+  /// cells' and sparse nodes' stiffness).
   double largest_modulus() const;
 };
 
