@@ -4715,37 +4715,97 @@ NG_RIGID = {"smooth": NG_SMOOTH, "rough": NG_ROUGH}
 # of the soil's. The N_q runs and the rigid footings' N_gamma runs (no steel) have 1e-6 of the
 # soil's; like for like the steel block's model takes 5e-9 of the steel's.
 NG_SOIL_EMPTY_CELLS = "5.0e-9"
+# The rigid footings' models carry no steel, so their empty cells take 1e-6 of the soil's E. Run
+# again with 2e-4 of it (1e-6 of the steel's: what they had while they listed the steel, before the
+# fix of docs/theory.md eq. 6.1) and, on h = B/10, with 1e-7 of it.
+NG_STEEL_SCALE_EMPTY_CELLS, NG_SMALLER_EMPTY_CELLS = "2.0e-4", "1.0e-7"
 
 
-def soil_relative_empty_cells(text):
-    """An N_gamma model whose empty cells get 1e-6 of the soil's E instead of the steel's."""
-    return replace_once(text, "empty_cell_stiffness: 1.0e-6",
-                        f"empty_cell_stiffness: {NG_SOIL_EMPTY_CELLS}")
+def change(a, b, digits=1):
+    """a against b in per cent, or a dash where either is missing."""
+    return "—" if not (np.isfinite(a) and np.isfinite(b)) else f"{(a / b - 1) * 100:+.{digits}f} %"
 
 
-def rigid_footings_note(runs, ng_mean, share, labels):
-    """§13: the rounded N_gamma rows with smooth and rough rigid footings, each against Martin's
-    value for its base plus the cohesion's share."""
-    parts, above = [], []
+def with_empty_cells(text, value):
+    return replace_once(text, "empty_cell_stiffness: 1.0e-6", f"empty_cell_stiffness: {value}")
+
+
+def rigid_footing_rows(runs, ng_mean, share, suffix=""):
+    """The rigid footings' means on NQ_TRI_MESHES (runs ng_rigid_{contact}_{n}{suffix}) with their
+    Richardson extrapolation against Martin's value for each base plus the cohesion's share:
+    (text, whether each lands more than 5 % above it, {contact: extrapolated or None})."""
+    parts, above, extrapolated = [], [], {}
     for contact, martin in NG_RIGID.items():
-        values = [ng_mean(runs[f"ng_rigid_{contact}_{n}"]) for n in NQ_TRI_MESHES]
+        values = [ng_mean(runs[f"ng_rigid_{contact}_{n}{suffix}"]) for n in NQ_TRI_MESHES]
         ex = richardson(values) if all(np.isfinite(values)) else None
         reference = martin + share
         above.append(ex is not None and ex[1] > 1.05 * reference)
+        extrapolated[contact] = ex[1] if ex else None
         parts.append(f"{contact} {' → '.join(fmt(v) for v in values)}"
                      + (f" (order {ex[0]:.2f}, extrapolated {ex[1]:.2f}, "
                         f"{(ex[1] / reference - 1) * 100:+.1f} % from {martin} + {share:.2f})"
                         if ex else " (no extrapolation)"))
-    return ("With rigid footings of the block's footprint instead (docs/theory.md §13) on h = "
-            + ", ".join(labels) + ": " + "; ".join(parts)
+    return "; ".join(parts), all(above), extrapolated
+
+
+def rigid_cohesion_note(runs, ng_mean, labels):
+    """§13: the rigid footings with twice the cohesion and rounding, each mesh's mean taken linearly
+    to c = 0 (2 N(c) - N(2c), as §11 does for the steel block) against Martin's value."""
+    parts, verdicts = [], []
+    for contact, martin in NG_RIGID.items():
+        one = [ng_mean(runs[f"ng_rigid_{contact}_{n}"]) for n in NQ_TRI_MESHES]
+        two = [ng_mean(runs[f"ng_rigid_{contact}_{n}_2c"]) for n in NQ_TRI_MESHES]
+        if not all(np.isfinite(one + two)):
+            parts.append(f"{contact}: not every run finished ("
+                         + ", ".join(f"{label} {fmt(v)}" for label, v in zip(labels, two)) + ")")
+            verdicts.append(f"{contact} {verdict(False)}")
+            continue
+        zero = [2 * a - b for a, b in zip(one, two)]
+        ex = richardson(zero)
+        verdicts.append(f"{contact} " + verdict(ex is not None and abs(ex[1] / martin - 1) <= 0.05))
+        parts.append(f"{contact} " + " → ".join(fmt(v) for v in two) + " (doubling the cohesion adds "
+                     + ", ".join(fmt(b - a) for a, b in zip(one, two)) + "), taken linearly to c = 0 "
+                     "(2N(c) − N(2c)) "
+                     + " → ".join(fmt(v) for v in zero)
+                     + (f", observed order {ex[0]:.2f}, Richardson extrapolation h → 0 {ex[1]:.2f} "
+                        f"({(ex[1] / martin - 1) * 100:+.1f} % from Martin's {martin})"
+                        if ex else ", no extrapolation"))
+    return (f"*The rigid footings' cohesion taken out* (as §11 does for the steel block): with c = "
+            f"{2 * NG_ROUND_C:g} kPa and a = {2 * NG_ROUND_A:g} kPa (the superposition share "
+            f"{2 * NG_ROUND_C * NC_30 / 20.0:.2f}) the rigid footings carry " + "; ".join(parts)
+            + ". **N_γ of the rigid footings by extrapolation** (target: within 5 % of Martin's "
+            "value; from three meshes, which §11 finds uncertain by some ±3 %): "
+            + ", ".join(verdicts) + ".")
+
+
+def rigid_footings_note(runs, ng_mean, share, labels):
+    """§13: the rounded N_gamma rows with smooth and rough rigid footings, each against Martin's
+    value for its base plus the cohesion's share, and with other stiffnesses of the empty cells."""
+    soil, above, ex_soil = rigid_footing_rows(runs, ng_mean, share)
+    steel, _, ex_steel = rigid_footing_rows(runs, ng_mean, share, "_steel_scale")
+    n0 = NQ_TRI_MESHES[0]
+    smaller = "; ".join(f"{c} " + change(ng_mean(runs[f"ng_rigid_{c}_{n0}_smaller"]),
+                                         ng_mean(runs[f"ng_rigid_{c}_{n0}"]), 2) for c in NG_RIGID)
+    shifts = [f"{c} {change(ex_soil[c], ex_steel[c])}" for c in NG_RIGID
+              if ex_soil[c] is not None and ex_steel[c] is not None]
+    return ("With rigid footings of the block's footprint instead (docs/theory.md §13; no steel in "
+            "these models, so the empty cells take 10⁻⁶ of the soil's E) on h = "
+            + ", ".join(labels) + ": " + soil
             + (": smooth or rough, the extrapolation lands more than 5 % above Martin's value for "
-               "that base, so the footing's roughness is not the cause either." if all(above)
-               else "."))
+               "that base, so the footing's roughness is not the cause either." if above else ".")
+            + f" With the empty cells at {NG_STEEL_SCALE_EMPTY_CELLS} of the soil's E (10⁻⁶ of the "
+            "steel's, what these models had while they listed the steel): " + steel
+            + (" — the soil-relative empty cells take the extrapolations " + ", ".join(shifts)
+               if shifts else "")
+            + f". With {NG_SMALLER_EMPTY_CELLS} of the soil's E the means on h = B/{2 * n0} move "
+            f"by {smaller}: at 10⁻⁶ the empty cells no longer carry part of the load.")
 
 
 def empty_cells_note(runs, ng_mean, ng, labels):
     """§13: the steel block's N_gamma rows with the N_q runs' empty-cell stiffness."""
     soft = [runs[f"ng_soil_block_{n}"] for n in NQ_TRI_MESHES]
+    slow = runs[f"ng_rigid_rough_{NQ_TRI_MESHES[-1]}"]
+    fast = runs[f"ng_rigid_rough_{NQ_TRI_MESHES[-1]}_steel_scale"]
     cells = []
     for label, r, stiff in zip(labels, soft, ng):
         if r.ok:
@@ -4756,14 +4816,17 @@ def empty_cells_note(runs, ng_mean, ng, labels):
             cells.append(f"{label} stopped at {NG_STIFFER * x[-1]:.5f} B ({stop_reason(r)})")
     return ("The empty parts of cells take 10⁻⁶ of the largest Young's modulus of the materials "
             "the points carry (`empty_cell_stiffness`), in the steel block's models the steel's, 200 "
-            "times the soil's, where the N_q runs and the rigid footings above have 10⁻⁶ of the "
+            "times the soil's, where the N_q runs and the rigid footings below have 10⁻⁶ of the "
             "soil's (until November 2026 a listed material counted too, and the rigid footings' "
             "models listed the steel). With 10⁻⁶ of the soil's (`empty_cell_stiffness: "
             f"{NG_SOIL_EMPTY_CELLS}`) the steel block carries " + ", ".join(cells)
             + ": the stiffer empty cells resist the heave beside the footing, where the soil has "
             "almost no strength, and carry part of what these meshes leave above Martin's value; "
-            "without that stiffness the finest mesh does not get through, so how much of the "
-            "extrapolated excess it accounts for is not measured.")
+            "without that stiffness the finest mesh does not get through. The rigid footings, "
+            "whose finest mesh does, measure how much of the extrapolated excess it accounts for "
+            f"(slowly: the rough one on h = B/{2 * NQ_TRI_MESHES[-1]} in {slow.steps} steps with "
+            f"{slow.cutbacks} cut-backs, against {fast.steps} and {fast.cutbacks} with the steel's "
+            "scale).")
 
 
 def section_dilatancy_on_triangles(args, work):
@@ -4776,7 +4839,15 @@ def section_dilatancy_on_triangles(args, work):
     texts.update({f"tri_ngamma_crossed_rounded_{n}": ngamma_rounded_text(n) for n in NQ_TRI_MESHES})
     texts.update({f"ng_rigid_{contact}_{n}": ngamma_rounded_text(n, footing=contact)
                   for contact in NG_RIGID for n in NQ_TRI_MESHES})
-    texts.update({f"ng_soil_block_{n}": soil_relative_empty_cells(ngamma_rounded_text(n))
+    texts.update({f"ng_rigid_{contact}_{n}_steel_scale":
+                  with_empty_cells(ngamma_rounded_text(n, footing=contact), NG_STEEL_SCALE_EMPTY_CELLS)
+                  for contact in NG_RIGID for n in NQ_TRI_MESHES})
+    texts.update({f"ng_rigid_{contact}_{NQ_TRI_MESHES[0]}_smaller":
+                  with_empty_cells(ngamma_rounded_text(NQ_TRI_MESHES[0], footing=contact),
+                                   NG_SMALLER_EMPTY_CELLS) for contact in NG_RIGID})
+    texts.update({f"ng_rigid_{contact}_{n}_2c": ngamma_rounded_text(n, times=2, footing=contact)
+                  for contact in NG_RIGID for n in NQ_TRI_MESHES})
+    texts.update({f"ng_soil_block_{n}": with_empty_cells(ngamma_rounded_text(n), NG_SOIL_EMPTY_CELLS)
                   for n in NQ_TRI_MESHES})
     texts.update({f"ng_invariance_{i}": ngamma_variant_text(c) for i, c in enumerate(NG_INVARIANCE)})
     texts.update({f"tresca_weight_{g}_{n}": tresca_weight_text(n, g) for g in TW_GAMMA_B
@@ -4801,9 +4872,6 @@ def section_dilatancy_on_triangles(args, work):
             return float("nan")
         x, q = push_curve(r, NG_FORCE_SCALE)
         return ngamma_window_mean(NG_STIFFER * x, q)
-
-    def change(a, b, digits=1):
-        return "—" if not (np.isfinite(a) and np.isfinite(b)) else f"{(a / b - 1) * 100:+.{digits}f} %"
 
     w("## 13. Dilatant flow on crossed triangles: N_q against N_γ")
     w("")
@@ -4884,8 +4952,9 @@ def section_dilatancy_on_triangles(args, work):
          "so what keeps N_γ high is not the triangles' treatment of dilatant flow; what N_γ adds is "
          "the self-weight, a strength rising from zero at the surface, where the same rounding "
          "(a = 1.5 c) then matters more than under a surcharge (§11, *What the rounding costs*)" if nq_reached and ng_above else "")
-      + ". " + rigid_footings_note(runs, ng_mean, share, labels) + " "
-      + empty_cells_note(runs, ng_mean, ng, labels)
+      + ". " + empty_cells_note(runs, ng_mean, ng, labels) + " "
+      + rigid_footings_note(runs, ng_mean, share, labels) + " "
+      + rigid_cohesion_note(runs, ng_mean, labels)
       + " How the N_γ limit of a mesh moves with the initial stress, the elastic constants, the "
       f"step and the points per triangle (h = B/10, the mean over the window against {fmt(ng[0])}): "
       + "; ".join(f"{label}: {fmt(ng_mean(runs[f'ng_invariance_{i}']))} "
