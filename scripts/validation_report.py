@@ -4798,7 +4798,9 @@ def rigid_footings_note(runs, ng_mean, share, labels):
             + (" — the soil-relative empty cells take the extrapolations " + ", ".join(shifts)
                if shifts else "")
             + f". With {NG_SMALLER_EMPTY_CELLS} of the soil's E the means on h = B/{2 * n0} move "
-            f"by {smaller}: at 10⁻⁶ the empty cells no longer carry part of the load.")
+            f"by {smaller}: at 10⁻⁶ the empty cells no longer carry part of the load (asserted for "
+            "the rough footing, with the steel's scale for contrast, in "
+            "`tests/verification/test_triangle_locking.cpp`).")
 
 
 def empty_cells_note(runs, ng_mean, ng, labels):

@@ -8,7 +8,9 @@
 //   the rigid-plastic limit levels off on the coarse mesh at about two thirds of the quad4 cells'
 //   load, above Martin's (2005) exact 14.75; with the rounded apex of docs/materials.md §3.6 its
 //   h = B/40 run, which stops with the sharp cone, goes through, from above towards Martin's, with
-//   at most 10 Newton iterations a step (the energy line search, docs/theory.md §4.4).
+//   at most 10 Newton iterations a step (the energy line search, docs/theory.md §4.4); rigid
+//   footings keep Martin's ratio of rough to smooth, and carry nothing on the empty cells once
+//   their scale is the soil's (docs/theory.md eq. 6.1; validation.md §13).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -133,6 +135,26 @@ TEST(TriangleLocking, NgammaOnCrossedTrianglesLosesTheDilatancyLocking) {
   EXPECT_LT(std::abs(crossed.at(0.002) / crossed.at(0.0015) - 1.0), 0.01);
 }
 
+/// The N_gamma model with a rigid footing of the steel block's footprint (penalty contact at the
+/// points' domain tops, docs/theory.md §13, `contact` smooth or rough) instead of the block. The
+/// steel is left listed: no point carries it, so it does not scale the empty cells' stiffness
+/// (docs/theory.md eq. 6.1).
+std::string rigid_footing_instead(std::string t, const std::string& contact) {
+  t = testing::replace_once(t,
+                            "  footing: {material: steel, region: {box: {min: [0, 5], max: [0.5, "
+                            "5.1]}}, points_per_cell: 4}\n",
+                            "");
+  t = testing::replace_once(t, "point_sets:\n  footing: {body: footing, region: all}\n", "");
+  t = testing::replace_once(t, "    prescribed_motion:\n      - {point_set: footing, displacement:",
+                            "    rigid_footings:\n      - {name: footing, base: 5, x: [0, 0.5], "
+                            "contact: " +
+                                contact + ", displacement:");
+  t = testing::replace_once(t, "{quantity: displacement, point_set: footing,",
+                            "{quantity: displacement, footing: footing,");
+  return testing::replace_once(t, "{quantity: reaction, point_set: footing,",
+                               "{quantity: reaction, footing: footing,");
+}
+
 TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRatio) {
   // The same model with a rigid footing of the block's footprint (penalty contact at the points'
   // domain tops, docs/theory.md §13) instead of the steel block. On triangles the footing touches
@@ -142,26 +164,13 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
   // above Martin's values (docs/validation.md §11 has 24.14 and 12.31, with the empty cells at
   // 2e-4 of the soil's E, when the listed steel set their scale).
   const auto text = [](const std::string& contact) {
-    auto t = ngamma_rigid_plastic(1);
-    t = testing::replace_once(t,
-                              "  footing: {material: steel, region: {box: {min: [0, 5], max: [0.5, "
-                              "5.1]}}, points_per_cell: 4}\n",
-                              "");
-    t = testing::replace_once(t, "point_sets:\n  footing: {body: footing, region: all}\n", "");
-    t = testing::replace_once(
-        t, "    prescribed_motion:\n      - {point_set: footing, displacement: [0, \"-0.002*t\"]}",
-        "    rigid_footings:\n      - {name: footing, base: 5, x: [0, 0.5], contact: " + contact +
-            ", displacement: [0, \"-0.002*t\"]}");
-    t = testing::replace_once(t, "{quantity: displacement, point_set: footing,",
-                              "{quantity: displacement, footing: footing,");
-    t = testing::replace_once(t, "{quantity: reaction, point_set: footing,",
-                              "{quantity: reaction, footing: footing,");
     // The empty cells' stiffness of the rigid-footing examples (docs/validation.md §4 (iv)): with
     // 1e-6 of the soil's E the air nodes beside the footing's edge keep Newton's corrections from
-    // converging (the rough run stops at 0.00048 B). The steel, which no body uses now, is left
-    // listed: it does not scale that stiffness (docs/theory.md eq. 6.1).
-    t = testing::replace_once(t, "empty_cell_stiffness: 1.0e-6", "empty_cell_stiffness: 1.0e-4");
-    return meshed(t, 5, Mesh::Crossed);
+    // converging on the sharp cone (the rough run stops at 0.00048 B).
+    return meshed(
+        testing::replace_once(rigid_footing_instead(ngamma_rigid_plastic(1), contact),
+                              "empty_cell_stiffness: 1.0e-6", "empty_cell_stiffness: 1.0e-4"),
+        5, Mesh::Crossed);
   };
   const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", -0.2, 1.0);
   const auto smooth = run_push(text("smooth"), "tri_ngamma_rigid_smooth", -0.2, 1.0);
@@ -213,6 +222,37 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   EXPECT_LT(std::abs(fine.at(0.0002) / fine.at(0.00015) - 1.0), 0.02);
   EXPECT_LE(coarse.most_newton_iterations, 10);
   EXPECT_LE(fine.most_newton_iterations, 10);
+}
+
+TEST(TriangleLocking, RigidFootingNgammaCarriesNothingOnTheEmptyCells) {
+  // The rough rigid footing of validation.md §13 (rounded apex, c = 0.1 kPa, 10 times stiffer and
+  // pushed 0.0002 B, h = B/10): its model holds no steel, so the empty cells take 1e-6 of the
+  // soil's E, and a tenth of that changes nothing. With 2e-4 of it (1e-6 of the steel's, what the
+  // model had while the listed steel set the scale: the fix of docs/theory.md eq. 6.1) the empty
+  // cells resist the heave beside the footing and carry load. Measured: 23.705, 23.704, 23.965.
+  const auto text = [](const std::string& empty_cells) {
+    auto t = testing::replace_once(ngamma_rigid_plastic(10), "c: 0.01, phi: 30, psi: 30,",
+                                   "c: 0.1, phi: 30, psi: 30, apex_rounding: 0.15, "
+                                   "lode_transition: 29,");
+    t = testing::replace_once(
+        t, "newton: {predictor: extrapolated, line_search: 6,",
+        "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6,");
+    t = testing::replace_once(t, "empty_cell_stiffness: 1.0e-6",
+                              "empty_cell_stiffness: " + empty_cells);
+    return meshed(rigid_footing_instead(t, "rough"), 5, Mesh::Crossed);
+  };
+  const double soil =
+      run_push(text("1.0e-6"), "tri_ngamma_empty_e6", -0.2, 1.0).mean(0.00015, 0.0002);
+  const double tenth =
+      run_push(text("1.0e-7"), "tri_ngamma_empty_e7", -0.2, 1.0).mean(0.00015, 0.0002);
+  const double steel =
+      run_push(text("2.0e-4"), "tri_ngamma_empty_steel", -0.2, 1.0).mean(0.00015, 0.0002);
+  std::printf(
+      "[N_gamma, rough rigid footing, h = B/10] empty cells 1e-6 E: %.3f, 1e-7 E: %.3f, "
+      "2e-4 E: %.3f\n",
+      soil, tenth, steel);
+  EXPECT_LT(std::abs(tenth / soil - 1.0), 0.002);
+  EXPECT_GT(steel / soil - 1.0, 0.005);
 }
 
 }  // namespace
