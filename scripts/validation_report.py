@@ -3790,7 +3790,15 @@ def meshed(text, mesh):
 NG_STIFF_E, NG_STIFF_PUSH, NG_STIFF_READ = 1000000, 0.002, (0.0015, 0.002)
 
 
+# The empty cells' stiffness of the rigid-footing examples (§4 (iv)), for the rigid footings on the
+# sharp cone (§11): with 1e-6 of the soil's E its air nodes beside the footing's edge keep Newton's
+# corrections from converging (the rough footing on h = B/10 stops at 0.00048 B). Rounded (§13),
+# they run through with the default 1e-6.
 NG_RIGID_SHARP_EMPTY_CELLS = "1.0e-4"
+
+
+def with_empty_cells(text, value):
+    return replace_once(text, "empty_cell_stiffness: 1.0e-6", f"empty_cell_stiffness: {value}")
 
 
 def rigid_footing_instead(text, contact):
@@ -3812,11 +3820,7 @@ def ngamma_stiff_text(n, mesh, footing="block", stiffer=1):
     same curve against settlement x stiffer, if the soil is rigid-plastic)."""
     text = example("frictional_footing/frictional_footing_ngamma.yaml")
     if footing != "block":
-        # The empty cells' stiffness of the rigid-footing examples (§4 (iv)): with 1e-6 of the
-        # soil's E, the sharp cone's air nodes beside the footing's edge keep Newton's corrections
-        # from converging (the rough footing on h = B/10 stops at 0.00048 B).
-        text = replace_once(rigid_footing_instead(text, footing), "empty_cell_stiffness: 1.0e-6",
-                            f"empty_cell_stiffness: {NG_RIGID_SHARP_EMPTY_CELLS}")
+        text = rigid_footing_instead(text, footing)
     text = replace_once(text, "E: 50000, nu: 0.3", f"E: {stiffer * NG_STIFF_E}, nu: 0.3")
     if footing == "block":
         text = replace_once(text, "E: 10000000, nu: 0.2", f"E: {200 * stiffer * NG_STIFF_E}, nu: 0.2")
@@ -3865,9 +3869,6 @@ def ngamma_rounded_text(n, times=1, footing="block"):
                         "c: 0.01, phi: 30, psi: 30,",
                         f"c: {times * NG_ROUND_C:g}, phi: 30, psi: 30, "
                         f"apex_rounding: {times * NG_ROUND_A:g}, lode_transition: {NG_ROUND_LODE},")
-    if footing != "block":  # rounded, the rigid footings run through with the default 1e-6
-        text = replace_once(text, f"empty_cell_stiffness: {NG_RIGID_SHARP_EMPTY_CELLS}",
-                            "empty_cell_stiffness: 1.0e-6")
     return replace_once(text, "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,",
                         "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6, "
                         "max_iterations: 20,")
@@ -4224,7 +4225,8 @@ def section_triangles(args, work):
     ngamma[("crossed_stiffer", 20)] = ngamma_stiff_text(20, "crossed", stiffer=NG_STIFFER)
     for contact in ("rough", "smooth"):
         for n in (5, 10):
-            ngamma[(f"crossed_{contact}", n)] = ngamma_stiff_text(n, "crossed", contact)
+            ngamma[(f"crossed_{contact}", n)] = with_empty_cells(
+                ngamma_stiff_text(n, "crossed", contact), NG_RIGID_SHARP_EMPTY_CELLS)
     ng = runner.batch({f"tri_ngamma_{m}_{n}": t for (m, n), t in ngamma.items()})
     ng = {k: ng[f"tri_ngamma_{k[0]}_{k[1]}"] for k in ngamma}
 
@@ -4726,10 +4728,6 @@ def change(a, b, digits=1):
     return "—" if not (np.isfinite(a) and np.isfinite(b)) else f"{(a / b - 1) * 100:+.{digits}f} %"
 
 
-def with_empty_cells(text, value):
-    return replace_once(text, "empty_cell_stiffness: 1.0e-6", f"empty_cell_stiffness: {value}")
-
-
 def rigid_footing_rows(runs, ng_mean, share, suffix=""):
     """The rigid footings' means on NQ_TRI_MESHES (runs ng_rigid_{contact}_{n}{suffix}) with their
     Richardson extrapolation against Martin's value for each base plus the cohesion's share:
@@ -4825,10 +4823,10 @@ def empty_cells_note(runs, ng_mean, ng, labels):
             + ": the stiffer empty cells resist the heave beside the footing, where the soil has "
             "almost no strength, and carry part of what these meshes leave above Martin's value; "
             "without that stiffness the finest mesh does not get through. The rigid footings, "
-            "whose finest mesh does, measure how much of the extrapolated excess it accounts for "
-            f"(slowly: the rough one on h = B/{2 * NQ_TRI_MESHES[-1]} in {slow.steps} steps with "
-            f"{slow.cutbacks} cut-backs, against {fast.steps} and {fast.cutbacks} with the steel's "
-            "scale).")
+            "whose finest mesh does, measure how much of the extrapolated excess it accounts for"
+            + (f" (slowly: the rough one on h = B/{2 * NQ_TRI_MESHES[-1]} in {slow.steps} steps "
+               f"with {slow.cutbacks} cut-backs, against {fast.steps} and {fast.cutbacks} with the "
+               "steel's scale)" if slow.ok and fast.ok else "") + ".")
 
 
 def section_dilatancy_on_triangles(args, work):

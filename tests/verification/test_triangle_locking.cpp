@@ -184,6 +184,15 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
   EXPECT_GT(qr, kNgammaRough);
 }
 
+/// The N_gamma model with the smooth hyperbolic surface of docs/materials.md §3.6 instead of the
+/// sharp cone: c = 0.1 kPa, apex_rounding 0.15 kPa (a = 1.5 c), corners from a Lode angle of 29 deg
+/// (validation.md §11's rounded rows).
+std::string rounded_apex(const std::string& t) {
+  return testing::replace_once(
+      t, "c: 0.01, phi: 30, psi: 30,",
+      "c: 0.1, phi: 30, psi: 30, apex_rounding: 0.15, lode_transition: 29,");
+}
+
 TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   // The N_gamma footing on crossed triangles at h = B/40, which stops at 0.0005 B with the sharp
   // cone (the cohesionless soil at the footing's edge at the apex: docs/validation.md §11), with
@@ -200,9 +209,7 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
   // (`extrapolated_patience: 10`): the zero start it would otherwise fall back to is the worse one
   // here (docs/theory.md §4.5).
   const auto text = [](int n) {
-    auto t = testing::replace_once(ngamma_rigid_plastic(10), "c: 0.01, phi: 30, psi: 30,",
-                                   "c: 0.1, phi: 30, psi: 30, apex_rounding: 0.15, "
-                                   "lode_transition: 29,");
+    auto t = rounded_apex(ngamma_rigid_plastic(10));
     t = testing::replace_once(
         t, "newton: {predictor: extrapolated, line_search: 6, max_iterations: 20,",
         "newton: {predictor: extrapolated, extrapolated_patience: 10, "
@@ -231,9 +238,7 @@ TEST(TriangleLocking, RigidFootingNgammaCarriesNothingOnTheEmptyCells) {
   // model had while the listed steel set the scale: the fix of docs/theory.md eq. 6.1) the empty
   // cells resist the heave beside the footing and carry load. Measured: 23.705, 23.704, 23.965.
   const auto text = [](const std::string& empty_cells) {
-    auto t = testing::replace_once(ngamma_rigid_plastic(10), "c: 0.01, phi: 30, psi: 30,",
-                                   "c: 0.1, phi: 30, psi: 30, apex_rounding: 0.15, "
-                                   "lode_transition: 29,");
+    auto t = rounded_apex(ngamma_rigid_plastic(10));
     t = testing::replace_once(
         t, "newton: {predictor: extrapolated, line_search: 6,",
         "newton: {predictor: extrapolated, extrapolated_patience: 20, line_search: 6,");
