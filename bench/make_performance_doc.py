@@ -509,7 +509,7 @@ def main():
         with open(args.notes) as f:
             notes = f.read().rstrip()
         # Tables written by other scripts (bench/footing_timings.md by
-        # scripts/validation_report.py, bench/predictor_timings.md by bench/newton_predictor.py);
+        # bench/strip_refinement.py, bench/predictor_timings.md by bench/newton_predictor.py);
         # the notes mark where they go, so the doc always carries the last ones (without their
         # title).
         for name in re.findall(r"<!-- bench/([\w.]+\.md) -->", notes):

@@ -1,6 +1,7 @@
-"""Whole `geompm run` timings for the benchmark scripts that compare Newton settings on complete
-models (bench/newton_predictor.py, bench/energy_search.py): one run, its repetitions with the
-median wall time, and the Markdown table they write."""
+"""Whole `geompm run` timings for the benchmark scripts that run complete models
+(bench/newton_predictor.py, bench/energy_search.py, bench/ghost_penalty.py,
+bench/strip_refinement.py): one run, its repetitions with the median wall time, and the Markdown
+table they write."""
 import argparse
 import os
 import re

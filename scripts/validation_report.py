@@ -420,6 +420,12 @@ STRIP_FILE = {"rough": "strip_footing/strip_footing.yaml",
               "rigid": "strip_footing/strip_footing_rigid_rough.yaml"}
 
 
+# The smooth rigid strip example's settings at the footing's edge
+# (examples/strip_footing/strip_footing_smooth.yaml), which circular_pressure_field tries too.
+SMOOTH_STRIP_GHOST = "1.0e-3"
+SMOOTH_STRIP_ENERGY_SEARCH = "0.1"
+
+
 CIRC_FILE = {"rough": "circular_footing/circular_footing.yaml",
              "smooth": "circular_footing/circular_footing_smooth.yaml",
              "rigid": "circular_footing/circular_footing_rigid_rough.yaml"}
@@ -431,7 +437,7 @@ def strip_text(kind, nu=0.49, formulation="mixed", n=10):
     text = example(STRIP_FILE[kind])
     text = replace_once(text, STRIP_CLAY, f"nu: {nu}, density: 0, formulation: {formulation}")
     if formulation != "mixed":
-        text = total_equation(text)
+        text = default_numerics(text)
     return strip_mesh(text, n)
 
 
@@ -440,9 +446,15 @@ def uses_incremental_equation(text):
 
 
 def pressure_equation_label(text):
-    """How a mixed model's pressure equation is set: the steel block's and rough rigid footing's
-    examples use the incremental equation with the fitted start, the smooth one the total."""
-    return "incremental, fitted" if uses_incremental_equation(text) else "total"
+    """How a mixed model's pressure equation is set (the strip examples: the incremental equation
+    with the fitted start), and whether the footing's edge is held (the smooth rigid strip
+    example's ghost penalty and energy line search)."""
+    label = "incremental, fitted" if uses_incremental_equation(text) else "total"
+    if re.search(r"^numerics: \{.*ghost_penalty: ", text, re.M):
+        label += ", ghost penalty"
+    if re.search(r"newton: \{.*energy_line_search: ", text):
+        label += ", energy line search"
+    return label
 
 
 def form_label(formulation, run):
@@ -451,14 +463,24 @@ def form_label(formulation, run):
             else FORM[formulation])
 
 
-def total_equation(text):
-    """The model with the default pressure equation (total, eq. 11.2) and start (the points'
-    rebuild, eq. 11.6): the examples' settings of the two removed."""
-    def remove(line):
-        for setting in ("mixed_pressure_start: fitted, ", "mixed_pressure_equation: incremental, "):
-            line = line.replace(setting, "")
-        return line
-    return "\n".join(remove(l) if l.startswith("numerics: {") else l for l in text.split("\n"))
+# The examples' settings that default_numerics removes: (the line they are on, their keys).
+EXAMPLE_SETTINGS = (("numerics: {", ("mixed_pressure_start", "mixed_pressure_equation", "ghost_penalty")),
+                    ("newton: {", ("energy_line_search",)))
+
+
+def default_numerics(text):
+    """The model with the code's defaults where the strip examples differ from them: the pressure
+    equation (the examples' incremental one, eqs. 11.8-11.9) and its start (fitted, eq. 11.11)
+    in `numerics`, and the smooth rigid strip's ghost penalty (`numerics`, eq. 6.3) and energy
+    line search (`newton`, §4.4), whatever their values."""
+    out = []
+    for line in text.split("\n"):
+        for start, keys in EXAMPLE_SETTINGS:
+            if line.lstrip().startswith(start):
+                for key in keys:  # (a key before others, or the last one)
+                    line = re.sub(rf"\b{key}: [^,}}]+, |, {key}: [^,}}]+(?=\}})", "", line)
+        out.append(line)
+    return "\n".join(out)
 
 
 def dense_points(text, per_cell=9, vtk=False):
@@ -471,7 +493,7 @@ def dense_points(text, per_cell=9, vtk=False):
 def strip_text_dense(kind, n=10, per_cell=9, nu=0.49, vtk=False):
     """The strip footing with more points per cell in the soil, with the total pressure equation
     for all three footings (the points-per-cell studies compare like with like)."""
-    return dense_points(total_equation(strip_text(kind, nu=nu, n=n)), per_cell, vtk)
+    return dense_points(default_numerics(strip_text(kind, nu=nu, n=n)), per_cell, vtk)
 
 
 def with_numerics(text, setting):
@@ -517,19 +539,37 @@ def structured(xy, values, box):
     return grid
 
 
-def checkerboard(grid):
-    """RMS of (value − mean of its 3×3 neighbourhood) over RMS value, over the entries whose 3×3
-    neighbourhood is complete: 0 for a linear field, 8/9 for a pure ±1 checkerboard."""
+def complete_patches(grid):
+    """The 3×3 neighbourhoods of a structured grid's entries that have a complete one."""
     nx, ny = grid.shape
-    dev, val = [], []
     for i in range(1, nx - 1):
         for j in range(1, ny - 1):
             block = grid[i - 1:i + 2, j - 1:j + 2]
             if np.all(np.isfinite(block)):
-                dev.append(grid[i, j] - block.mean())
-                val.append(grid[i, j])
-    dev, val = np.array(dev), np.array(val)
-    return math.sqrt(np.mean(dev ** 2)) / math.sqrt(np.mean(val ** 2))
+                yield block
+
+
+def rms_ratio(measure, grid):
+    """RMS of measure(patch) over the RMS of the patches' centres."""
+    patches = list(complete_patches(grid))
+    measured = np.array([measure(b) for b in patches])
+    centre = np.array([b[1, 1] for b in patches])
+    return math.sqrt(np.mean(measured ** 2)) / math.sqrt(np.mean(centre ** 2))
+
+
+def checkerboard(grid):
+    """RMS of (value − mean of its 3×3 neighbourhood) over RMS value, over the entries whose 3×3
+    neighbourhood is complete: 0 for a linear field, 8/9 for a pure ±1 checkerboard."""
+    return rms_ratio(lambda b: b[1, 1] - b.mean(), grid)
+
+
+CHECKERBOARD_STENCIL = np.outer([1.0, -2.0, 1.0], [1.0, -2.0, 1.0]) / 16.0
+
+
+def checkerboard_mode(grid):
+    """RMS of the checkerboard component (δ²_x δ²_y p) / 16 over RMS value, over the entries whose
+    3×3 neighbourhood is complete: 1 for a pure ±1 checkerboard, 0 for any f(x) + g(y)."""
+    return rms_ratio(lambda b: float(np.sum(CHECKERBOARD_STENCIL * b)), grid)
 
 
 # The uniform fine region of the strip mesh below the footing's final base (h = 0.05).
@@ -750,7 +790,7 @@ def pressure_equation_incremental(runner, w, runs, cname, S):
     started from the points' rebuild, against the total one (runs: the total equation's): the
     loads, the checkerboard measure and Newton."""
     incr = runner.batch({f"{k}_incremental_{nu}":
-                         incremental_pressure(total_equation(strip_text(k, nu, "mixed")))
+                         incremental_pressure(default_numerics(strip_text(k, nu, "mixed")))
                          for k in KINDS for nu in (0.49, 0.4999)})
     w("**With the incremental pressure equation** (`numerics.mixed_pressure_equation: incremental`, "
       "docs/theory.md eqs. 11.8–11.9: the pressure equation ties only the step's change of the "
@@ -821,24 +861,34 @@ def pressure_equation_incremental(runner, w, runs, cname, S):
       + (f"; the steel block, whose example allows 20 Newton iterations without cutting the step "
          f"back, needs more than 10 in a step: {', '.join(over_ten)}" if over_ten else "")
       + ". With this start it is no example's setting; with the fitted start (below) it is the "
-      "steel block's and the rough rigid footing's.")
+      "three strip examples'.")
     w("")
+    examples = runner.batch({f"{k}_mixed_{nu}": strip_text(k, nu, "mixed")
+                             for k in ("smooth", "rigid") for nu in (0.49, 0.4999)})
+    for k in ("smooth", "rigid"):
+        for nu in (0.49, 0.4999):
+            r = examples[f"{k}_mixed_{nu}"]
+            if r.ok:
+                like[("example", k, nu)] = (r.q_at(S, 0.1), r.q_mean(S, 0.08, 0.1))
     w(smooth_against_rough_like_for_like(like))
     w("")
 
 
 def smooth_against_rough_like_for_like(like):
-    """§4 (iii): the smooth and rough rigid footings compared with the same pressure equation
-    (like: (equation, kind, nu) -> (q at 0.1 B, mean over 0.08-0.1 B))."""
+    """§4 (iii): the smooth and rough rigid footings compared as their examples are and with the
+    same pressure equation (like: (setting, kind, nu) -> (q at 0.1 B, mean over 0.08-0.1 B), the
+    setting "example", "incremental" or "total")."""
     parts, held = [], {}
-    for equation in ("incremental", "total"):
+    settings = {"example": "with the examples' own settings", "incremental": "with the incremental "
+                "equation", "total": "with the total equation"}
+    for equation in ("example", "incremental", "total"):
         pairs = [(nu, like[(equation, "smooth", nu)], like[(equation, "rigid", nu)])
                  for nu in (0.49, 0.4999)
                  if (equation, "smooth", nu) in like and (equation, "rigid", nu) in like]
         if not pairs:
             continue
         held[equation] = all(a[0] <= b[0] and a[1] <= b[1] for _, a, b in pairs)
-        parts.append(f"with the {equation} equation smooth ≤ rough "
+        parts.append(f"{settings[equation]} smooth ≤ rough "
                      + ("holds" if held[equation] else "does not hold") + " ("
                      + "; ".join(f"ν = {nu}: {a[0]:.2f} against {b[0]:.2f} at 0.1 B, "
                                  f"{a[1]:.2f} against {b[1]:.2f} in the mean" for nu, a, b in pairs)
@@ -846,10 +896,11 @@ def smooth_against_rough_like_for_like(like):
     if not parts:
         return "*Smooth against rough, like for like*: no pair of runs to compare."
     every = bool(held) and all(held.values())
-    text = (f"**Smooth ≤ rough, like for like: {verdict(every)}** (§4 (iii): the examples' rigid "
-            "footings use different pressure equations, the smooth one the total equation and the "
-            "rough one the incremental with the fitted start, so here both rigid footings run with "
-            "the same equation, the table above, the incremental one started from the points' "
+    text = (f"**Smooth ≤ rough: {verdict(every)}** (§4 (iii), at 0.1 B and in the mean over "
+            "0.08–0.1 B: the examples' rigid footings both use the incremental equation with the "
+            "fitted start, the smooth one with the ghost penalty and the energy line search too, "
+            "so they are compared as they are and, like for like, with the same equation and "
+            "nothing else, the table above, the incremental one started from the points' "
             "rebuild): " + "; ".join(parts) + ".")
     if held.get("incremental") and held.get("total") is False:
         text += (" The ordering a rough base should give holds where the pressure checkerboard is "
@@ -901,7 +952,7 @@ def fitted_pressure_start_rows(runner, w, runs, cname, S):
     converged nodal pressure fitted (theory eq. 11.11): the loads, the checkerboard measure,
     Newton, and which targets it reaches."""
     fitted = runner.batch({f"{k}_incremental_fitted_{nu}":
-                           fitted_start(incremental_pressure(total_equation(strip_text(k, nu, "mixed"))))
+                           fitted_start(incremental_pressure(default_numerics(strip_text(k, nu, "mixed"))))
                            for k in KINDS for nu in (0.49, 0.4999)})
     w("**With the incremental equation started from the fitted last field** "
       "(`numerics.mixed_pressure_start: fitted`, docs/theory.md eq. 11.11: each step starts from "
@@ -914,6 +965,8 @@ def fitted_pressure_start_rows(runner, w, runs, cname, S):
       "Newton max / mean |")
     w("|---|---|---|---|---|---|---|---|")
     verdict = strip_variant_rows(w, lambda k, nu: fitted[f"{k}_incremental_fitted_{nu}"], "", S)
+    # the smooth rigid footing's example: the same with its ghost penalty and energy line search
+    example = runner.batch({nu: strip_text("smooth", nu, "mixed") for nu in (0.49, 0.4999)})
     w("")
     w(f"- incremental, fitted start: {verdict}.")
     w("")
@@ -934,7 +987,17 @@ def fitted_pressure_start_rows(runner, w, runs, cname, S):
       "(h = B/40) it lifts the loads the total equation leaves below the band, but the smooth "
       "rigid footing stops, Newton stalling at the node on the footing's edge. So the steel "
       "block's and the rough rigid footing's examples use it (their rows in the tables above "
-      "are these runs), and the smooth rigid footing's keeps the total equation. It is not the "
+      "are these runs), and the smooth rigid footing's uses it with the ghost penalty "
+      "(`ghost_penalty: 1.0e-3`, docs/theory.md eq. 6.3) holding that node by the filled cells "
+      "beside it and the energy line search (`newton.energy_line_search: 0.1`, §4.4): with the "
+      "two its run on h = B/40 finishes at both Poisson's ratios (§5; by hand, 2026-11-27: "
+      "ν = 0.4999 5.13 at 0.1 B, and with γ = 3·10⁻³ or 10⁻² instead of 10⁻³ both ν finish too; "
+      "without the energy line search, or without the penalty, h = B/40 stops at ν = 0.49). Its "
+      "rows in the tables above have them; at h = B/20 they move its load at 0.1 B by "
+      + " / ".join(f"{(example[nu].q_at(S, 0.1) / fitted[f'smooth_incremental_fitted_{nu}'].q_at(S, 0.1) - 1) * 100:+.1f} %"
+                   if example[nu].ok and fitted[f"smooth_incremental_fitted_{nu}"].ok else "—"
+                   for nu in (0.49, 0.4999))
+      + " (ν = 0.49 / 0.4999, against this table's rows). It is not the "
       "code's default: the smooth rigid footings stop with it (also the circular one of §7 on "
       "h = D/20, at 0.087 D, which the total equation passes; the rough rigid one on h = D/40 "
       "reaches 0.1 D at 6.26, +3.5 % from N_c), and §6–§9 have not been run with it.")
@@ -945,15 +1008,15 @@ def fitted_refinement(runner, w, levels, S):
     """§5: the refinement of all three footings with the incremental pressure equation started
     from the fitted last field (theory eq. 11.11) and with the total equation (the brackets)."""
     runs = runner.batch({f"{LABEL[k]}_n{n}_incremental_fitted":
-                         fitted_start(incremental_pressure(total_equation(strip_text(k, n=n))))
+                         fitted_start(incremental_pressure(default_numerics(strip_text(k, n=n))))
                          for k in KINDS for n in levels})
-    totals = runner.batch({f"{LABEL[k]}_n{n}_total": total_equation(strip_text(k, n=n))
+    totals = runner.batch({f"{LABEL[k]}_n{n}_total": default_numerics(strip_text(k, n=n))
                            for k in KINDS for n in levels})
     w("The same refinement for all three footings with the incremental pressure equation started "
       "from the fitted last field (`mixed_pressure_equation: incremental`, `mixed_pressure_start: "
       "fitted`, docs/theory.md eq. 11.11; §4; the steel block's and the rough rigid footing's "
-      "setting in the table above), in brackets the total equation's values (the default, and "
-      "the smooth rigid footing's setting above):")
+      "setting in the table above, where the smooth rigid footing's adds the ghost penalty and the "
+      "energy line search), in brackets the total equation's values (the default):")
     w("")
     w("| footing | h | q/s_u at 0.1 B (total) | mean over 0.08–0.1 B (total) | C nodal | "
       "steps | Newton max / mean | wall time |")
@@ -1009,7 +1072,7 @@ def pressure_stabilisation_floor_rows(runner, w, runs, cname, S):
     the targets each combination reaches."""
     equations = (("total", lambda t: t), ("incremental", incremental_pressure))
     cases = {f"{k}_{eq}_floor{f:g}_{nu}":
-                 stabilisation_floor(make(total_equation(strip_text(k, nu, "mixed"))), f)
+                 stabilisation_floor(make(default_numerics(strip_text(k, nu, "mixed"))), f)
              for eq, make in equations for f in FLOORS for k in KINDS for nu in (0.49, 0.4999)}
     floor_runs = runner.batch(cases)
     w("**With a floor of the exact projection** (`numerics.pressure_stabilisation_floor`, "
@@ -1088,8 +1151,11 @@ def section_strip(args, work):
       "the pressure (`mixed_pressure_equation: incremental`, docs/theory.md eqs. 11.8–11.9) and "
       "start each step from the last nodal pressure fitted (`mixed_pressure_start: fitted`, "
       "eq. 11.11), which keeps the nodal pressure smooth as the points cross cells (below, "
-      "*Pressure field*); the smooth rigid footing's keeps the total equation (the default), with "
-      "which its run on h = B/40 finishes (§5). "
+      "*Pressure field*); so does the smooth rigid footing's, which also holds the node on the "
+      "footing's edge by the ghost penalty (`ghost_penalty: 1.0e-3`, docs/theory.md eq. 6.3) and "
+      "shortens overshooting corrections by the energy line search (`newton.energy_line_search: "
+      "0.1`, §4.4): without the two its run on h = B/40 stops (§5, the refinement with the "
+      "incremental equation started from the fitted last field). "
       "q/s_u = 2 × reaction / (B s_u). "
       "Reference: Prandtl q/s_u = 2 + π = 5.14, smooth or rough; target 5.14–5.40 at 0.1 B, and "
       "the mixed p–u answer moving by < 2 % between ν = 0.49 and 0.4999.")
@@ -1210,25 +1276,26 @@ def section_strip(args, work):
     w("")
 
     # pressure field
-    # The total equation's runs (the default; the smooth rigid example's setting), for the
+    # The total equation's runs (the default), for the
     # comparisons here and the variants of the pressure equation below.
-    total = runner.batch({cname(k, "mixed", nu): total_equation(strip_text(k, nu, "mixed"))
+    total = runner.batch({cname(k, "mixed", nu): default_numerics(strip_text(k, nu, "mixed"))
                           for k in KINDS for nu in (0.49, 0.4999)})
     mixed_r = runs[cname("rough", "mixed", 0.4999)]
     disp_r = runs[cname("rough", "displacement", 0.49)]
     disp_r2 = runs[cname("rough", "displacement", 0.4999)]
-    rows, example_c = [], {}
+    rows, example_c, example_mode = [], {}, {}
+    mode = {}  # label -> the checkerboard mode's amplitude in the nodal pressure
     mixed_rows = [(k, nu, runs[cname(k, "mixed", nu)]) for k in KINDS for nu in (0.4999, 0.49)]
-    mixed_rows += [(k, nu, total[cname(k, "mixed", nu)]) for k in ("rough", "rigid")
-                   for nu in (0.4999,)]
+    mixed_rows += [(k, nu, total[cname(k, "mixed", nu)]) for k in KINDS for nu in (0.4999,)]
     for k, nu, r in mixed_rows:
         if not r.ok:
             continue
         label = f"{LABEL[k]}, mixed ({pressure_equation_label(r.text)}), ν = {nu}"
         nodal, cells = checkerboard(nodal_pressure_grid(r)), checkerboard(cell_pressure_grid(r))
         rows.append((label, nodal, cells))
+        mode[label] = checkerboard_mode(nodal_pressure_grid(r))
         if r is runs[cname(k, "mixed", nu)]:
-            example_c[(k, nu)] = nodal
+            example_c[(k, nu)], example_mode[(k, nu)] = nodal, mode[label]
     for label, r in (("rough (steel block), displacement, ν = 0.49", disp_r),
                      ("rough (steel block), displacement, ν = 0.4999", disp_r2),
                      ("rough (steel block), F-bar, ν = 0.4999", runs[cname("rough", "f_bar", 0.4999)])):
@@ -1263,10 +1330,17 @@ def section_strip(args, work):
       f"fine region {CHECK_BOX[0][0]:g} ≤ x ≤ {CHECK_BOX[1][0]:g}, {CHECK_BOX[0][1]:g} ≤ y ≤ "
       f"{CHECK_BOX[1][1]:g} below the footing's final base, at 0.1 B. C = 0 for a linear field and "
       "8/9 for a pure ±1 checkerboard; a smooth field with the footing-edge singularity gives a few "
-      "percent.")
+      "percent. C counts every departure from a locally linear field: the checkerboard, but also "
+      "the singular corner at the footing's edge and single nodes where slip lines meet. The "
+      "checkerboard mode alone: A = RMS(δ²ₓδ²ᵧp / 16) / RMS(p) over the same nodes, δ²ₓδ²ᵧp / 16 "
+      "the stencil (1, −2, 1) ⊗ (1, −2, 1) / 16 at each node, which is 1 for a pure ±1 "
+      "checkerboard and 0 for any field f(x) + g(y), bilinear ones included (docs/theory.md §11, "
+      "*Measured since*). We take C < 0.1 as a smooth field and A < 0.1 as one without the "
+      "checkerboard mode.")
     w("")
-    w("| run | C of the nodal pressure | C of the cell-averaged point pressure |")
-    w("|---|---|---|")
+    w("| run | C of the nodal pressure | A of the nodal pressure | C of the cell-averaged point "
+      "pressure |")
+    w("|---|---|---|---|")
     # the same with denser points (the quadrature, §5); not part of the verdict below
     dense_p = runner.batch({f"rough_p{k}_04999": strip_text_dense("rough", per_cell=k, nu=0.4999,
                                                                   vtk=True) for k in (9, 16)})
@@ -1274,8 +1348,10 @@ def section_strip(args, work):
     for k, grid in ((9, "3×3"), (16, "4×4")):
         r = dense_p[f"rough_p{k}_04999"]
         if r.ok:
-            dense_rows.append((f"rough (steel block), mixed (total), ν = 0.4999, {grid} points per cell",
-                               checkerboard(nodal_pressure_grid(r)), checkerboard(cell_pressure_grid(r))))
+            label = f"rough (steel block), mixed (total), ν = 0.4999, {grid} points per cell"
+            dense_rows.append((label, checkerboard(nodal_pressure_grid(r)),
+                               checkerboard(cell_pressure_grid(r))))
+            mode[label] = checkerboard_mode(nodal_pressure_grid(r))
     # the rigid-plastic limit (§5): stiff clay pushed 0.005 B, before any point crosses a cell
     limit_p = runner.batch({f"{k}_limit_04999": tresca_limit_text(
         STRIP_FILE[k], 10, vtk=True, nu=0.4999, start="extrapolated") for k in KINDS})
@@ -1288,11 +1364,15 @@ def section_strip(args, work):
         r = limit_p[f"{k}_limit_04999"]
         label = LABEL[k.split("_")[0]] + (", cell average" if k.endswith("_avg") else "")
         if r.ok:
-            limit_rows.append((f"{label}, mixed (total), ν = 0.4999, rigid-plastic limit (E = "
-                               f"{TRESCA_STIFF_E:g} s_u, {TRESCA_STIFF_PUSH:g} B)",
-                               checkerboard(nodal_pressure_grid(r)), checkerboard(cell_pressure_grid(r))))
+            label = (f"{label}, mixed (total), ν = 0.4999, rigid-plastic limit (E = "
+                     f"{TRESCA_STIFF_E:g} s_u, {TRESCA_STIFF_PUSH:g} B)")
+            limit_rows.append((label, checkerboard(nodal_pressure_grid(r)),
+                               checkerboard(cell_pressure_grid(r))))
+            mode[label] = checkerboard_mode(nodal_pressure_grid(r))
     for label, nodal, cells in rows + dense_rows + limit_rows:
-        w(f"| {label} | {'—' if math.isnan(nodal) else f'{nodal:.3f}'} | {cells:.3f} |")
+        a = mode.get(label, float("nan"))
+        w(f"| {label} | {'—' if math.isnan(nodal) else f'{nodal:.3f}'} | "
+          f"{'—' if math.isnan(a) else f'{a:.3f}'} | {cells:.3f} |")
     w("")
     mixed_c = max(c for l, n, c in rows if "mixed" in l)
     disp_c = [c for l, n, c in rows if "displacement" in l]
@@ -1313,20 +1393,23 @@ def section_strip(args, work):
     for e in evolution:
         w(f"- {e}")
     w("")
-    by_equation = {}
-    for (k, nu), c in example_c.items():
-        by_equation.setdefault(pressure_equation_label(runs[cname(k, "mixed", nu)].text), []).append(c)
-    worst = max(example_c.values())
-    w(f"**{'Reached' if worst < 0.1 else 'Not reached'}** for the nodal pressure field of the "
-      "examples at 0.1 B (we take C < 0.1 as free of checkerboard): "
-      + "; ".join(f"C = {min(cs):.3f}–{max(cs):.3f} with the "
-                  + ("incremental equation and the fitted start" if eq != "total"
-                     else "total equation") for eq, cs in sorted(by_equation.items()))
-      + " (the steel block's and the rough rigid footing's examples use the incremental equation "
-      "with the fitted start, the smooth rigid footing's the total one: below, *With the "
-      "incremental equation started from the fitted last field*). The incremental equation's "
-      "field is smooth to the eye (the left panel above); what C still counts there are single "
-      "nodes near the axis and beside the footing's edge. With the total equation (the default) "
+    worst, worst_mode = max(example_c.values()), max(example_mode.values())
+    total_modes = [mode[f"{LABEL[k]}, mixed (total), ν = 0.4999"] for k in KINDS
+                   if f"{LABEL[k]}, mixed (total), ν = 0.4999" in mode]
+    rough_c = [f"{LABEL[k]} at ν = {nu} ({c:.3f})" for (k, nu), c in sorted(example_c.items())
+               if c >= 0.1]
+    w(f"**No checkerboard mode in the examples' nodal pressure at 0.1 B: {verdict(worst_mode < 0.1)}** "
+      f"(A < 0.1): A = {min(example_mode.values()):.3f}–{worst_mode:.3f} over the six runs of the "
+      "examples (all three with the incremental equation and the fitted start; below, *With the "
+      "incremental equation started from the fitted last field*), against "
+      + (f"{min(total_modes):.3f}–{max(total_modes):.3f}" if total_modes else "—")
+      + " with the total equation (the default; table). "
+      f"**A locally linear field, C < 0.1: {verdict(worst < 0.1)}**: C = "
+      f"{min(example_c.values()):.3f}–{worst:.3f}"
+      + (f", at or above 0.1 for {', '.join(rough_c)}" if rough_c else "") + ". The examples' "
+      "fields are smooth to the eye (the left panel above, and the three examples below); what C "
+      "still counts there are single nodes near the axis and beside the footing's edge. With the "
+      "total equation (the default) "
       "the nodal pressure is smooth "
       "while the points have not moved far (C ≈ 0.07 at 0.025 B), but as the soil points cross the "
       "cells under the footing it develops a node-to-node oscillation (values alternating between "
@@ -1357,6 +1440,16 @@ def section_strip(args, work):
           " (one volume per cell, as in the Q1/P0 element, whose checkerboard pressure modes are "
           "well known)" if fbar_c[0] >= 0.1 else "") if fbar_c else "") + ".")
     w("")
+    examples_p = [nodal_pressure_panel(runs[cname(k, "mixed", 0.4999)], f"{LABEL[k]}, ν = 0.4999: "
+                                       "nodal pressure") for k in KINDS
+                  if runs[cname(k, "mixed", 0.4999)].ok]
+    if examples_p:
+        plot_pressure(os.path.join(FIGURES, "strip_footing_pressure_examples.png"), examples_p)
+        w("The nodal pressure of the three examples at 0.1 B (ν = 0.4999; the nodes inside the "
+          "footing left out):")
+        w("")
+        w("![nodal pressure of the three strip examples](validation/strip_footing_pressure_examples.png)")
+        w("")
     # The variants of the pressure equation, each against the total equation for all three.
     pressure_equation_incremental(runner, w, total, cname, S)
     pressure_stabilisation_floor_rows(runner, w, total, cname, S)
@@ -1394,19 +1487,19 @@ def section_strip(args, work):
                          for rough in KINDS for n in conv_levels[rough]})
     # The studies of the points per cell and the interpolation compare with the total equation
     # for all three footings.
-    conv_total = runner.batch({f"{LABEL[rough]}_n{n}": total_equation(strip_text(rough, n=n))
+    conv_total = runner.batch({f"{LABEL[rough]}_n{n}": default_numerics(strip_text(rough, n=n))
                                for rough in KINDS for n in conv_levels[rough]})
     w("## 5. Strip footing: mesh convergence (REFERENCES §3)")
     w("")
     w("The models of §4 (mixed p–u, ν = 0.49) with 5, 10 and 20 cells under the half-width "
       "(h = B/10, B/20, B/40) in the fine region [0, 1] × [4, 5], the graded region refined in "
       "proportion; 2×2 points per cell, the same load steps. Wall time on one thread of a shared "
-      "2-core machine (" + cpu_model() + ").")
+      "2-core machine (" + cpu_model() + "), single runs: bench/strip_refinement.py measures the "
+      "same models' cost with repetitions (docs/performance.md, finding 7).")
     w("")
     w("| footing | cells under B/2 | h | points | q/s_u at 0.1 B | mean over 0.08–0.1 B | steps | "
       "Newton total | Newton max / mean per step | wall time | time per step |")
     w("|---|---|---|---|---|---|---|---|---|---|---|")
-    bench = []
     conv_q = {}
     for rough in KINDS:
         for n in conv_levels[rough]:
@@ -1420,7 +1513,6 @@ def section_strip(args, work):
             npts = r.points()
             w(f"| {LABEL[rough]} | {n} | B/{2 * n} | {npts} | {q:.3f} | {qm:.3f} | "
               f"{r.steps} | {r.newton} | {itmax} / {itmean:.2f} | {r.wall:.0f} s | {r.wall / r.steps:.2f} s |")
-            bench.append((rough, n, npts, r))
     w("")
     series = []
     for rough in KINDS:
@@ -1520,7 +1612,7 @@ def section_strip(args, work):
               + f" | {r.q_mean(S, 0.08, 0.1):.3f} |")
     w("")
     interp = runner.batch({f"{LABEL[rough]}_{k}": replace_once(
-        total_equation(strip_text(rough)), "buffer_layers: 1", f"buffer_layers: 1, interpolation: {k}")
+        default_numerics(strip_text(rough)), "buffer_layers: 1", f"buffer_layers: 1, interpolation: {k}")
         for rough in ("rough", "smooth") for k in ("ddmp", "gimp")})
     w("The same footings (h = B/20, ν = 0.49, total equation) with DDMP and GIMP instead of "
       "standard MPM:")
@@ -1551,7 +1643,6 @@ def section_strip(args, work):
         "on h = B/40), so this measures the discretisation's limit load without the quadrature "
         "after crossings that decides the runs to 0.1 B.", FOOTING_DISCUSSION_5_LIMIT,
         averaged=True)
-    write_bench(bench)
 
     # --- §6 large deformation ----------------------------------------------------------------
     print("§6 large-deformation footing", flush=True)
@@ -1637,6 +1728,63 @@ def section_strip(args, work):
     w("")
 
     return lines
+
+
+def with_edge_settings(text):
+    """The model with the smooth rigid strip example's ghost penalty (eq. 6.3) and energy line
+    search (§4.4)."""
+    return replace_once(with_numerics(text, f"ghost_penalty: {SMOOTH_STRIP_GHOST}"), "newton: {",
+                        f"newton: {{energy_line_search: {SMOOTH_STRIP_ENERGY_SEARCH}, ")
+
+
+def circular_pressure_field(runner, w, circ, circ_text, circ_ref, C):
+    """§7: the checkerboard measures of the circular examples' nodal pressure at 0.1 D (circ,
+    the total equation) against the strip examples' setting (the incremental equation with the
+    fitted start; the smooth rigid footing with the strip's edge settings too)."""
+    def strip_setting(k):
+        text = fitted_start(incremental_pressure(circ_text[k]))
+        return with_edge_settings(text) if k == "smooth" else text
+    fitted = runner.batch({f"{k}_incremental_fitted": strip_setting(k) for k in KINDS})
+    w("*Pressure field.* The circular examples' nodal pressure at 0.1 D (the measures C and A of "
+      "§4, over the same nodes under the footing), with the total equation (the examples') and "
+      "with the strip examples' setting (the incremental equation with the fitted start; the "
+      "smooth rigid footing also with the ghost penalty 10⁻³ and the energy line search, without "
+      "which it stops at 0.087 D):")
+    w("")
+    w("| footing | pressure equation | q/s_u at 0.1 D | mean over 0.08–0.1 D | error vs N_c | C nodal | "
+      "A nodal | steps | Newton max / mean |")
+    w("|---|---|---|---|---|---|---|---|---|")
+    modes = {"total": [], "fitted": []}
+    errors = []
+    for k in KINDS:
+        for label, r in (("total (the example)", circ[k]),
+                         ("incremental, fitted" + (", ghost penalty, energy line search"
+                                                   if k == "smooth" else ""),
+                          fitted[f"{k}_incremental_fitted"])):
+            if not r.ok:
+                w(f"| {LABEL[k]} | {label} | {stopped(r, C).replace(' B', ' D')} | | | | | | |")
+                continue
+            q, qm, itmax, itmean = at_tenth(r, C)
+            grid = nodal_pressure_grid(r)
+            a = checkerboard_mode(grid)
+            modes["total" if r is circ[k] else "fitted"].append(a)
+            if r is not circ[k]:
+                errors.append(q / circ_ref[k] - 1)
+            w(f"| {LABEL[k]} | {label} | {q:.3f} | {qm:.3f} | {(q / circ_ref[k] - 1) * 100:+.1f} % | "
+              f"{checkerboard(grid):.3f} | {a:.3f} | {r.steps} | {itmax} / {itmean:.1f} |")
+    w("")
+    if modes["total"] and modes["fitted"]:
+        w(f"**No checkerboard mode in the circular examples' nodal pressure (A < 0.1): "
+          f"{verdict(max(modes['total']) < 0.1)}**: A = {min(modes['total']):.3f}–"
+          f"{max(modes['total']):.3f} with the examples' total equation. With the strip examples' "
+          f"setting A = {min(modes['fitted']):.3f}–{max(modes['fitted']):.3f}, but on this mesh the "
+          f"loads at 0.1 D rise to {min(errors) * 100:+.0f} to {max(errors) * 100:+.0f} % from N_c "
+          "(the incremental equation's h = D/20 excess above); on h = D/40 the rough rigid "
+          "footing comes down to N_c with the incremental equation (the table above), but each run "
+          "takes minutes instead of seconds. So the circular examples stay on h = D/20 with the "
+          "total equation, closer to N_c there, accepting the checkerboard the total equation "
+          "develops as the points cross cells (§4).")
+        w("")
 
 
 def section_circular(args, work):
@@ -1727,6 +1875,7 @@ def section_circular(args, work):
       + (f"Within 5 % of N_c at 0.1 D with it: {', '.join(near)}. " if near else "")
       + "The circular examples keep the total equation (the default).")
     w("")
+    circular_pressure_field(runner, w, circ, circ_text, circ_ref, C)
     w("Mesh refinement (cells under the radius; h = D/10, D/20, D/40):")
     w("")
     w("| footing | cells under R | h | settlement s | q/s_u at s | mean over 0.8 s – s | error vs N_c | steps | wall time |")
@@ -2197,7 +2346,7 @@ def tresca_limit_text(file, n, vtk=False, nu=0.49, start="plastic_surface"):
     ("plastic_surface", "extrapolated" or "zero": PLASTIC_SURFACE_START, EXTRAPOLATED_START,
     ELASTIC_SURFACE_START); VTK output off unless `vtk`."""
     # (with the total pressure equation: before any crossing the two agree, docs/theory.md §11)
-    t = replace_once(strip_mesh(total_equation(example(file)), n), "E: 500,", f"E: {TRESCA_STIFF_E},")
+    t = replace_once(strip_mesh(default_numerics(example(file)), n), "E: 500,", f"E: {TRESCA_STIFF_E},")
     if start == "plastic_surface":
         t = plastic_surface_start(t)
     elif start == "extrapolated":
@@ -3252,48 +3401,10 @@ def cpu_model():
         return "unknown CPU"
 
 
-def write_bench(bench):
-    path = os.path.join(ROOT, "bench", "footing_timings.md")
-    L = ["# Strip footing: cost against mesh refinement", "",
-         "Generated by `scripts/validation_report.py --sections footing` (docs/validation.md §5). "
-         "Models: `examples/strip_footing/strip_footing.yaml` (rough, steel block) and "
-         "`strip_footing_smooth.yaml` (smooth) and `strip_footing_rigid_rough.yaml` (rough rigid "
-         "footing), mixed p–u (the steel block and the rough rigid footing with the incremental "
-         "pressure equation and the fitted start, the smooth one with the total equation; "
-         "docs/validation.md §4), Tresca, ν = 0.49, pushed to 0.1 B in steps "
-         "of at most 0.0025 B, standard MPM, 2×2 points per cell; the mesh refined in the fine region "
-         "[0, 1] × [4, 5] and, in proportion, in the graded region.", "",
-         f"Machine: {cpu_model()}, `geompm run -t 1` (one thread). The machine has 2 cores and was "
-         "shared with other work (builds, a second run at the same time), so wall times can be "
-         "10–30 % high.", "",
-         "| footing | cells under B/2 | h | points | steps | cut-backs | Newton iterations total | "
-         "mean Newton per step | max Newton per step | wall time | mean time per step | "
-         "time per Newton iteration | q/s_u at 0.1 B |",
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for rough, n, npts, r in bench:
-        itmax, itmean = r.iterations()
-        L.append(f"| {LABEL[rough]} | {n} | B/{2 * n} | {npts} | {r.steps} | "
-                 f"{r.cutbacks} | {r.newton} | {itmean:.2f} | {itmax} | {r.wall:.1f} s | "
-                 f"{r.wall / r.steps:.3f} s | {r.wall / r.newton * 1000:.0f} ms | {r.q_at(-2.0, 0.1):.3f} |")
-    L.append("")
-    L.append("Steps differ between the meshes because of the adaptive step (docs/theory.md §4.6): after a "
-             "cut-back the step grows again only after an 'easy' step (at most `easy_iterations` Newton "
-             "iterations), and plastic steps take 6–8, so a run that was cut back early keeps the small step "
-             "(h = B/40: cut back to Δt = 0.003125 at step 14 and stayed there for 256 steps, 8× the "
-             "steps of an uncut run). Compare the time per step and per Newton iteration across meshes, "
-             "not the totals.")
-    L.append("")
-    L.append("Unknowns are not reported by the binary: 2 displacement and 1 pressure unknown per active "
-             "node, about 3 × the active nodes.")
-    with open(path, "w") as f:
-        f.write("\n".join(L) + "\n")
-
-
 FOOTING_DISCUSSION_4 = (
     "*The remarks that follow were measured with the total pressure equation (eq. 11.2), all "
     "three examples' setting until November 2026; the numbers they quote are of that equation "
-    "(for the steel block and the rough rigid footing, the tables of the variants below give the "
-    "total equation's values beside the examples').* "
+    "(the tables of the variants below give the total equation's values beside the examples').* "
     "**What the volume average changes (steel block).** The mixed points take their cell's average "
     "volume change (F-bar, docs/theory.md §12, the default `mixed_volume: cell_average`). With each "
     "point's own volume change instead (the plain p–u formulation of §11, `per_point`), the steel "
@@ -3315,9 +3426,11 @@ FOOTING_DISCUSSION_4 = (
     "2×2 points meet the band at h = B/20 partly because the softness of their coarser quadrature "
     "cancels the mesh's over-estimate. (iii) *Smooth against rough*: theory has them equal, and a "
     "discretisation that constrains a rough base more should carry at least as much under it. The "
-    "examples' rigid footings (table) use different pressure equations (smooth: the total one; "
-    "rough: the incremental one with the fitted start), so the table compares them unlike; like for "
-    "like, below (*With the incremental pressure equation*, the paragraph after its verdict). (iv) *The rigid footings keep each point's own volume change* (`per_point` in "
+    "examples' rigid footings (table) both use the incremental pressure equation with the fitted "
+    "start, and the smooth one also the ghost penalty and the energy line search at its edge "
+    "(until 27 November 2026 it used the total equation), so the table compares them nearly like "
+    "for like; with the same equation and nothing else, below (*With the incremental pressure "
+    "equation*, the paragraph after its verdict). (iv) *The rigid footings keep each point's own volume change* (`per_point` in "
     "their examples), *backtrack* (`line_search: 6`, `max_iterations: 10`) *and give the empty parts "
     "of partly filled cells 10⁻⁴ E* (`empty_cell_stiffness: 1.0e-4`, against 10⁻⁶ E in the other "
     "examples). Without backtracking (up to 20 iterations a step, 10⁻⁶ E) the smooth rigid footing "
@@ -3403,8 +3516,8 @@ FOOTING_DISCUSSION_4 = (
     "at the onset of the mechanism (about 0.035 B) and does not grow back, since plastic steps take "
     "more iterations than `easy_iterations`, hence the step counts.")
 FOOTING_DISCUSSION_5 = (
-    "*With the total pressure equation* (the default, the smooth rigid footing's example's, and the "
-    "brackets of the second table above). "
+    "*With the total pressure equation* (the default; the smooth rigid footing's example's until "
+    "27 November 2026, and the brackets of the second table above). "
     "With the volume average (§4) the steel block's q/s_u falls with h from above and ends a little "
     "below 2 + π at h = B/40 (−2.7 % at 0.1 B, −2.4 % in the mean): MPM with moving points is not a "
     "strict upper bound, and the cell-crossing noise (±3 %, growing as the settlement of 0.1 B spans "
