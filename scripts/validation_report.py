@@ -1755,20 +1755,18 @@ def circular_pressure_field(runner, w, circ, circ_text, circ_ref, C):
       "A nodal | steps | Newton max / mean |")
     w("|---|---|---|---|---|---|---|---|---|")
     modes = {"total": [], "fitted": []}
-    errors = []
+    errors = []  # of the strip setting's loads at 0.1 D
     for k in KINDS:
-        for label, r in (("total (the example)", circ[k]),
-                         ("incremental, fitted" + (", ghost penalty, energy line search"
-                                                   if k == "smooth" else ""),
-                          fitted[f"{k}_incremental_fitted"])):
+        for group, r in (("total", circ[k]), ("fitted", fitted[f"{k}_incremental_fitted"])):
+            label = pressure_equation_label(r.text)
             if not r.ok:
                 w(f"| {LABEL[k]} | {label} | {stopped(r, C).replace(' B', ' D')} | | | | | | |")
                 continue
             q, qm, itmax, itmean = at_tenth(r, C)
             grid = nodal_pressure_grid(r)
             a = checkerboard_mode(grid)
-            modes["total" if r is circ[k] else "fitted"].append(a)
-            if r is not circ[k]:
+            modes[group].append(a)
+            if group == "fitted":
                 errors.append(q / circ_ref[k] - 1)
             w(f"| {LABEL[k]} | {label} | {q:.3f} | {qm:.3f} | {(q / circ_ref[k] - 1) * 100:+.1f} % | "
               f"{checkerboard(grid):.3f} | {a:.3f} | {r.steps} | {itmax} / {itmean:.1f} |")

@@ -161,8 +161,8 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
   // the top faces of the points' sub-cells; a smooth base lets the soil slide, and Martin's exact
   // solutions put the rough footing's N_gamma at 14.75 / 7.65 = 1.93 times the smooth one's.
   // Measured (h = B/10): 24.03 rough (the steel block: 24.17) and 12.11 smooth, both about 60 %
-  // above Martin's values (docs/validation.md §11 has 24.14 and 12.31, with the empty cells at
-  // 2e-4 of the soil's E, when the listed steel set their scale).
+  // above Martin's values (docs/validation.md §11 has the same runs; with the empty cells at 2e-4
+  // of the soil's E, when the listed steel set their scale, they were 24.14 and 12.31).
   const auto text = [](const std::string& contact) {
     // The empty cells' stiffness of the rigid-footing examples (docs/validation.md §4 (iv)): with
     // 1e-6 of the soil's E the air nodes beside the footing's edge keep Newton's corrections from
