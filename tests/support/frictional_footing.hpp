@@ -112,6 +112,9 @@ inline constexpr double kSurchargeScale = -2.0;
 inline const double kCohesionShare = 0.01 * kNc;
 // N_gamma = q / (gamma B / 2) = 2 x 2 x force / (20 x 1).
 inline constexpr double kGammaScale = -0.2;
+// The rounded N_gamma examples' token cohesion c = 0.1 kPa adds, by superposition,
+// 2 c N_c / (gamma B) = 0.30 to N_gamma (frictional_footing_ngamma_limit*.yaml).
+inline const double kGammaCohesionShare = 2.0 * 0.1 * kNc / 20.0;
 
 /// The N_q example in the rigid-plastic limit (docs/validation.md §9; scripts/validation_report.py
 /// nq_stiff_text): sand E = 1e5 q0 instead of 5000 q0, pushed 0.0015 B so that the mechanism forms
