@@ -5314,9 +5314,13 @@ def section_ngamma_examples(args, work):
       "an observed order near 1 from above; if the order falls on finer meshes (the singular fan at "
       "the edge would make it fall), the extrapolation from three of these meshes sits high. N_γ is "
       "the factor that finite-difference and finite-element studies find most sensitive to the "
-      "mesh and to the flow rule (Frydman & Burd 1997, J. Geotech. Geoenviron. Eng. 123(1)); a mesh "
-      "graded towards the footing's edge (generated segments with a `ratio` on either side of it) "
-      "is the next thing to try.")
+      "mesh and to the flow rule (Frydman & Burd 1997, J. Geotech. Geoenviron. Eng. 123(1)). A mesh "
+      "graded towards the footing's edge points the same way (by hand, rough, the cells of h = B/20 "
+      "graded by `ratio: 0.3` towards the edge from either side and towards the surface, from about "
+      "B/12 to B/40: 18.98, between the uniform B/20's 19.78 and B/40's 17.95, with a quarter of the "
+      "latter's cells; graded by 0.1, to about B/100 at the edge, the run stops at 0.00054 B, still "
+      "rising): resolving the edge is what lowers the load, and meshes graded to it are the next "
+      "thing to try for the extrapolation.")
     w("")
     return lines
 
