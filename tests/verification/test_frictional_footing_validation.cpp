@@ -129,7 +129,7 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaIsOverEstimatedWithoutALimitLo
 TEST(FrictionalFootingValidation, SelfWeightNgammaLimitExamplesLevelOffWithinTenIterations) {
   // examples/frictional_footing/frictional_footing_ngamma_limit*.yaml: rigid footings (rough and
   // smooth) on crossed triangles in the rigid-plastic limit, with a rounded apex (c = 0.1 kPa),
-  // Newton capped at 10 iterations a step. Read as docs/validation.md §9 reads them: the mean over
+  // Newton capped at 10 iterations a step. Read as docs/validation.md §14 reads them: the mean over
   // the last quarter of the push (0.00015-0.0002 B), against Martin's (2005) N_gamma plus the
   // token cohesion's share by superposition, 2 c N_c / (gamma B) = 0.30.
   struct Footing {
@@ -149,7 +149,7 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaLimitExamplesLevelOffWithinTen
       // plastic flow; measured 9-10, 0-5 steps cut back).
       ASSERT_FALSE(push->stopped) << footing->file;
       EXPECT_LE(push->most_newton_iterations, 10) << footing->file;
-      // A limit load: over the read window the load rises by less than 1 % (measured 0.3-0.7 %).
+      // A limit load: over the read window the load rises by less than 1 % (measured 0.2-0.6 %).
       EXPECT_LT(push->at(0.0002) / push->at(0.00015) - 1.0, 0.01) << footing->file;
     }
     const double coarse = footing->coarse.mean(0.00015, 0.0002);
@@ -158,7 +158,7 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaLimitExamplesLevelOffWithinTen
                 footing->file, coarse, fine, footing->reference,
                 (fine / footing->reference - 1) * 100);
     // Constant-strain triangles over-estimate it, less on the finer mesh (measured on h = B/10,
-    // B/20: rough 23.77, 19.78; smooth 11.36, 10.12; docs/validation.md §9 extrapolates).
+    // B/20: rough 23.77, 19.78; smooth 11.36, 10.12; docs/validation.md §14 extrapolates).
     EXPECT_GT(fine, footing->reference);
     EXPECT_LT(fine, coarse);
   }
