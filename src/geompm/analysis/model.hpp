@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 #include "geompm/mesh/mesh.hpp"
 
 namespace geompm {

@@ -8,6 +8,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "geompm/analysis/linear_solver_hints.hpp"
 #include "geompm/boundary/contact_hold.hpp"
 #include "geompm/physics/gimp_weights.hpp"
 #include "geompm/solver/newmark.hpp"
@@ -386,6 +387,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   second.iterations += failed.iterations;
   second.halvings += failed.halvings;
   second.searches += failed.searches;
+  second.linear_iterations += failed.linear_iterations;
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);
@@ -509,10 +511,15 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
     const int patience = phase.spec->newton.extrapolated_patience;
     first.patience = patience > 0 ? patience : std::max(1, settings.max_iterations / 2);
   }
+  // The step's pattern and unknowns, for the linear solver; a retry analyses again, as a direct
+  // solver's symbolic analysis takes the values of the first matrix after it (UMFPACK's).
+  const LinearSolverHints hints = linear_solver_hints(grid_, model_.mesh.nodes);
+  solver_.analyse(grid_.pattern(), hints);
   result.newton = solve_newton(problem, solver_, first, x, grid_.tangent_storage());
   if (extrapolated && !result.newton.converged) {
     x.setZero();
     hold_footing_contacts(footings, true);
+    solver_.analyse(grid_.pattern(), hints);
     NewtonResult from_zero = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
     result.newton = after_attempt(result.newton, std::move(from_zero));
   }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geompm/core/expression.hpp"
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 #include "geompm/mesh/mesh.hpp"
 
 namespace geompm {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 #include "geompm/io/yaml_access.hpp"
 #include "geompm/mesh/cell_type.hpp"
 

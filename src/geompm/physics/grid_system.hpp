@@ -27,7 +27,7 @@
 #include "geompm/physics/finite_strain.hpp"
 #include "geompm/physics/node_block.hpp"
 #include "geompm/points/material_points.hpp"
-#include "geompm/solver/linear_solver.hpp"
+#include "geompm/core/linear_algebra.hpp"
 
 namespace geompm {
 
