@@ -20,6 +20,7 @@
 #include <optional>
 #include <vector>
 
+#include "geompm/core/linear_algebra.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
@@ -27,7 +28,6 @@
 #include "geompm/physics/finite_strain.hpp"
 #include "geompm/physics/node_block.hpp"
 #include "geompm/points/material_points.hpp"
-#include "geompm/core/linear_algebra.hpp"
 
 namespace geompm {
 

@@ -28,12 +28,12 @@ Verdict ConvergenceTest::judge(std::span<const double> residuals, double norm,
   // Patience (theory §4.5): past it, Newton goes on only while it converges superlinearly. A
   // residual already within tolerance is not given up on: only the size of the next correction
   // is still to be seen, and it is converged, not stalling.
-  if (settings_.patience > 0 && k >= static_cast<std::size_t>(settings_.patience) &&
-      !residual_ok && !(relative < superlinear_contraction * residuals[k - 1]))
-    return {Verdict::Failed,
-            fmt::format(
-                "not converging superlinearly after {} iterations (relative residual {:.3e})", k,
-                relative)};
+  if (settings_.patience > 0 && k >= static_cast<std::size_t>(settings_.patience) && !residual_ok &&
+      !(relative < superlinear_contraction * residuals[k - 1]))
+    return {
+        Verdict::Failed,
+        fmt::format("not converging superlinearly after {} iterations (relative residual {:.3e})",
+                    k, relative)};
   return {};
 }
 

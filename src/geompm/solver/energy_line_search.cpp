@@ -48,8 +48,7 @@ double EnergyLineSearch::shorten(NonlinearProblem& problem, Vector& x, Vector& d
   if (!(along_full < -tolerance_ * along_start_)) return 1.0;
   searched_ = true;
   const Vector start = x - dx;
-  const double eta =
-      energy_line_search(problem, start, dx, along_start_, along_full, tolerance_);
+  const double eta = energy_line_search(problem, start, dx, along_start_, along_full, tolerance_);
   if (eta < 1.0) {
     dx *= eta;
     x = start + dx;

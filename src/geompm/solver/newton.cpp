@@ -50,12 +50,13 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
         kept = energy_search.shorten(problem, x, dx, residual);
       if (kept < 1.0) {
         ++result.searches;
-      } else if (backtracking.retreat(Backtracking::overshot(admissible, relative,
-                                                             result.residuals.back(),
-                                                             energy_search.searched()),
-                                      x, dx)) {
-        kept = 0.5;
-        ++result.halvings;
+      } else {
+        const bool overshot = Backtracking::overshot(admissible, relative, result.residuals.back(),
+                                                     energy_search.searched());
+        if (backtracking.retreat(overshot, x, dx)) {
+          kept = 0.5;
+          ++result.halvings;
+        }
       }
       if (kept < 1.0) {
         last_correction = relative_to_increment(dx);

@@ -31,14 +31,13 @@ TEST(ConvergenceTest, NeedsTheResidualAndTheCorrection) {
   EXPECT_EQ(test.judge(small, 1.0, 1e-7, not_asked).kind, Verdict::Converged);
   // The last correction was large: the one the current residual asks for decides.
   int asked = 0;
-  EXPECT_EQ(test.judge(small, 1.0, 1e-3, [&] { return ++asked, 1e-7; }).kind,
-            Verdict::Converged);
+  EXPECT_EQ(test.judge(small, 1.0, 1e-3, [&] { return ++asked, 1e-7; }).kind, Verdict::Converged);
   EXPECT_EQ(test.judge(small, 1.0, 1e-3, [&] { return ++asked, 1e-5; }).kind, Verdict::GoOn);
   EXPECT_EQ(asked, 2);
   // A failed measurement (infinite) does not converge.
-  EXPECT_EQ(test.judge(small, 1.0, 1e-3, [] { return std::numeric_limits<double>::infinity(); })
-                .kind,
-            Verdict::GoOn);
+  EXPECT_EQ(
+      test.judge(small, 1.0, 1e-3, [] { return std::numeric_limits<double>::infinity(); }).kind,
+      Verdict::GoOn);
   // A residual above tolerance goes on whatever the correction.
   EXPECT_EQ(test.judge(std::vector<double>{1.0, 1e-7}, 1.0, 0.0, not_asked).kind, Verdict::GoOn);
 }
@@ -52,9 +51,8 @@ TEST(ConvergenceTest, TheFirstIterateHasNoCorrectionToTest) {
 
 TEST(ConvergenceTest, GivesUpOnANonFiniteResidualFirst) {
   const ConvergenceTest test(tolerances());
-  const Verdict v =
-      test.judge(std::vector<double>{std::numeric_limits<double>::quiet_NaN()}, 0.0, 0.0,
-                 not_asked);
+  const Verdict v = test.judge(std::vector<double>{std::numeric_limits<double>::quiet_NaN()}, 0.0,
+                               0.0, not_asked);
   EXPECT_EQ(v.kind, Verdict::Failed);
   EXPECT_EQ(v.failure, "the residual is not finite");
 }
@@ -68,8 +66,7 @@ TEST(ConvergenceTest, GivesUpOnDivergenceAndAfterMaxIterations) {
   const std::vector<double> five(6, 1e-3);  // iterate k = 5 = max_iterations
   const Verdict out = test.judge(five, 1.0, 1.0, not_asked);
   EXPECT_EQ(out.kind, Verdict::Failed);
-  EXPECT_NE(out.failure.find("no convergence in 5 iterations"), std::string::npos)
-      << out.failure;
+  EXPECT_NE(out.failure.find("no convergence in 5 iterations"), std::string::npos) << out.failure;
   EXPECT_EQ(test.judge(std::vector<double>(5, 1e-3), 1.0, 1.0, not_asked).kind, Verdict::GoOn);
 }
 
@@ -86,9 +83,8 @@ TEST(ConvergenceTest, PastThePatienceOnlySuperlinearConvergenceGoesOn) {
             Verdict::GoOn);
   EXPECT_EQ(test.judge(std::vector<double>{1.0, 0.9}, 1.0, 1.0, not_asked).kind, Verdict::GoOn);
   // A residual within tolerance whose correction is still to be seen is not given up on.
-  EXPECT_EQ(
-      test.judge(std::vector<double>{1.0, 2e-8, 0.9e-8}, 1.0, 1.0, [] { return 1e-3; }).kind,
-      Verdict::GoOn);
+  EXPECT_EQ(test.judge(std::vector<double>{1.0, 2e-8, 0.9e-8}, 1.0, 1.0, [] { return 1e-3; }).kind,
+            Verdict::GoOn);
 }
 
 }  // namespace
