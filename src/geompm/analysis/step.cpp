@@ -11,7 +11,7 @@
 #include "geompm/analysis/linear_solver_hints.hpp"
 #include "geompm/boundary/contact_hold.hpp"
 #include "geompm/physics/gimp_weights.hpp"
-#include "geompm/solver/newmark.hpp"
+#include "geompm/physics/newmark.hpp"
 
 namespace geompm {
 
