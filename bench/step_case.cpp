@@ -97,8 +97,8 @@ StepCase::StepCase(int cells, Formulation formulation) : cells_(cells), formulat
 void StepCase::map() {
   if (!grid_) {
     heap_before_grid_ = heap_in_use();
-    grid_ = std::make_unique<GridSystem>(model_->mesh, model_->topology,
-                                         model_->material_pointers(), grid_settings(*model_));
+    grid_ = std::make_unique<testing::GridHarness>(
+        model_->mesh, model_->topology, model_->material_pointers(), grid_settings(*model_));
   }
   grid_->initialise(model_->points);
   f_ext_ = grid_->external_force(model_->points, phase_->gravity(1.0), {});
@@ -108,14 +108,16 @@ void StepCase::map() {
 void StepCase::constrain() {
   if (!mapped_) map();
   const int dim = grid_->dim();
-  const auto& node_to_active = grid_->node_to_active();
+  const auto& node_to_active = grid_->grid().node_to_active();
+  const DofMap& dofs = grid_->system().dofs();
+  const int u = dofs.find("displacement");
   constrained_dofs_.assign(grid_->num_dofs(), 0);
   for (const auto& fixity : phase_->fixities)
     for (Index node : fixity.nodes) {
       const Index n = node_to_active[node];
       if (n < 0) continue;
       for (int i = 0; i < dim; ++i)
-        if (fixity.components[i]) constrained_dofs_[n * dim + i] = 1;
+        if (fixity.components[i]) constrained_dofs_[dofs.dof(u, n, i)] = 1;
     }
   grid_->set_constraints(constrained_dofs_);
   constrained_ = true;
@@ -124,12 +126,13 @@ void StepCase::constrain() {
 void StepCase::evaluate() {
   if (!constrained_) constrain();
   if (du_.size() != grid_->num_dofs()) {
-    const int dim = grid_->dim();
+    const DofMap& dofs = grid_->system().dofs();
+    const int u = dofs.find("displacement");
     du_ = Vector::Zero(grid_->num_dofs());
     for (std::size_t n = 0; n < grid_->active_nodes().size(); ++n)
-      du_(Index(n) * dim + 1) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
+      du_(dofs.dof(u, Index(n), 1)) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
   }
-  grid_->internal_force(model_->points, du_, f_int_, &grid_->tangent_storage());
+  grid_->internal_force(model_->points, du_, f_int_, nullptr, true);
   if (memory_.grid == 0) memory_.grid = double(heap_in_use() - heap_before_grid_);
   evaluated_ = true;
 }
@@ -139,10 +142,11 @@ void StepCase::analyse() {
   // UMFPACK's symbolic analysis alone: the solver does it at its first setup after
   // LinearSolver::analyse (solver/eigen_direct_solver.hpp), which has no call for it on its own.
   Eigen::UmfPackLU<SparseMatrix> umfpack;
-  umfpack.analyzePattern(grid_->tangent_storage());
+  umfpack.analyzePattern(grid_->system().tangent());
   if (!solver_) {
     solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
-    solver_->analyse(grid_->pattern(), linear_solver_hints(*grid_, model_->mesh.nodes));
+    solver_->analyse(grid_->system().tangent(),
+                     linear_solver_hints(grid_->system().dofs(), model_->mesh.nodes));
   }
   analysed_ = true;
 }
@@ -151,14 +155,10 @@ void StepCase::factorize_and_solve() {
   if (!analysed_) analyse();
   const std::size_t before = heap_in_use();
   // The Newton right-hand side: the out-of-balance force at the free unknowns.
-  if (residual_.size() != grid_->num_free()) {
-    const Vector r = f_ext_ - f_int_;
-    residual_ = Vector::Zero(grid_->num_free());
-    for (Index d = 0; d < grid_->num_dofs(); ++d)
-      if (grid_->free_index()[d] >= 0) residual_(grid_->free_index()[d]) = r(d);
-  }
+  const DofMap& dofs = grid_->system().dofs();
+  if (residual_.size() != dofs.num_free()) dofs.restrict_to_free(f_ext_ - f_int_, residual_);
   // The first call also does the symbolic analysis (bench_step.cpp makes it before timing).
-  solver_->setup(grid_->tangent_storage());
+  solver_->setup(grid_->system().tangent());
   Vector dx;
   solver_->solve(residual_, dx, 1e-10);
   if (memory_.solver == 0) memory_.solver = double(heap_in_use() - before);
@@ -177,9 +177,10 @@ void StepCase::convect_and_relocate() {
   // As StepSolver::convect_and_relocate: find every destination before committing anything.
   std::vector<Location> found(n);
   std::vector<char> lost(n, 0);
+  const Vector nodal_du = displacement_block(grid_->system().dofs(), du_);
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
-    const Vec3 destination = points.position[p] + grid_->interpolate(points, p, du_);
+    const Vec3 destination = points.position[p] + grid_->grid().interpolate(points, p, nodal_du);
     if (auto where = model_->locator->locate(destination, points.cell[p]))
       found[p] = *where;
     else

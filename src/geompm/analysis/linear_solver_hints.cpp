@@ -1,38 +1,39 @@
 #include "geompm/analysis/linear_solver_hints.hpp"
 
-#include <algorithm>
-
 namespace geompm {
 
-LinearSolverHints linear_solver_hints(const GridSystem& grid, const std::vector<Vec3>& nodes) {
+LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3>& nodes) {
   LinearSolverHints hints;
   // Finite strain, non-associated flow, F-bar and friction make the tangent unsymmetric.
   hints.symmetric = false;
-  const int dim = grid.dim();
-  hints.block_size = dim;
-  const std::vector<Index>& active = grid.active_nodes();
-  hints.node_coordinates.reserve(active.size());
-  for (const Index node : active) hints.node_coordinates.push_back(nodes[node]);
-  hints.unknown_node.assign(grid.num_free(), -1);
-  hints.unknown_component.assign(grid.num_free(), -1);
-  LinearSolverField displacement{"displacement", {}}, pressure{"pressure", {}};
-  const std::vector<Index>& free = grid.free_index();
-  const Index displacements = static_cast<Index>(active.size()) * dim;
-  for (Index d = 0; d < static_cast<Index>(free.size()); ++d) {
-    const Index row = free[d];
-    if (row < 0) continue;  // constrained: not in the matrix
-    if (d < displacements) {
-      hints.unknown_node[row] = d / dim;
-      hints.unknown_component[row] = static_cast<int>(d % dim);
-      displacement.unknowns.push_back(row);
-    } else {
-      pressure.unknowns.push_back(row);
+  hints.unknown_node.assign(dofs.num_free(), -1);
+  hints.unknown_component.assign(dofs.num_free(), -1);
+  bool displacement_seen = false;
+  for (int f = 0; f < dofs.num_fields(); ++f) {
+    const Field& field = dofs.field(f);
+    // The grid's displacement field gives the blocks (rigid-body modes for AMG); a further
+    // displacement field (a structure's, later) is one more field of the split.
+    const bool blocks = field.kind == FieldKind::Displacement && field.nodal && !displacement_seen;
+    if (blocks) {
+      displacement_seen = true;
+      hints.block_size = field.components;
+      hints.node_coordinates.reserve(field.entities);
+      for (Index e = 0; e < field.entities; ++e)
+        hints.node_coordinates.push_back(nodes[dofs.active_nodes()[e]]);
     }
-  }
-  for (LinearSolverField* field : {&displacement, &pressure}) {
-    std::sort(field->unknowns.begin(), field->unknowns.end());
-    if (!field->unknowns.empty() || field == &displacement)
-      hints.fields.push_back(std::move(*field));
+    LinearSolverField split{field.name, {}};
+    // Entity-major numbering and free indices in the order of the unknowns: ascending rows.
+    for (Index e = 0; e < field.entities; ++e)
+      for (int c = 0; c < field.components; ++c) {
+        const Index row = dofs.free_index(dofs.dof(f, e, c));
+        if (row < 0) continue;  // constrained: not in the matrix
+        split.unknowns.push_back(row);
+        if (blocks) {
+          hints.unknown_node[row] = e;
+          hints.unknown_component[row] = c;
+        }
+      }
+    hints.fields.push_back(std::move(split));
   }
   return hints;
 }
