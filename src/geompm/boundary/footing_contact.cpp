@@ -1,6 +1,6 @@
 #include "geompm/boundary/footing_contact.hpp"
 
-#include "geompm/physics/gimp_weights.hpp"
+#include "geompm/interpolation/gimp_weights.hpp"
 
 namespace geompm {
 

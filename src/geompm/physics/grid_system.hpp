@@ -11,22 +11,18 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <optional>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "geompm/core/linear_algebra.hpp"
+#include "geompm/interpolation/interpolation.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
-#include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/points/material_points.hpp"
 
 namespace geompm {
-
-/// How points see the grid: the shape functions of their cell (standard MPM), DDMP gradients
-/// (docs/theory.md §8) or GIMP weights over the point's domain (§9; rectilinear grids only).
-enum class GridInterpolation { Standard, DualDomain, Gimp };
 
 /// The step's numerical settings, read by the grid and by the contributions that need them.
 struct GridSettings {
@@ -132,7 +128,7 @@ class GridSystem {
 
   // --- how points see the grid -----------------------------------------------------------------
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
-  bool wide_stencil() const { return settings_.interpolation != GridInterpolation::Standard; }
+  bool wide_stencil() const { return interpolation_->wide(); }
   /// Point p's shape values (nen) and reference gradients (nen x dim, column-major) in its cell.
   const double* cell_shape(Index p) const { return shape_.data() + std::size_t(p) * nen_; }
   const double* cell_gradients(Index p) const {
@@ -140,11 +136,11 @@ class GridSystem {
   }
   /// Point p's wide stencil (DDMP, GIMP): entries [begin, end) of the wide arrays, nodes active
   /// and ascending, gradients dim per entry.
-  Index wide_begin(Index p) const { return wide_start_[p]; }
-  Index wide_end(Index p) const { return wide_start_[p + 1]; }
-  const std::vector<Index>& wide_nodes() const { return wide_nodes_; }
-  const std::vector<double>& wide_values() const { return wide_N_; }
-  const std::vector<double>& wide_gradients() const { return wide_gradients_; }
+  Index wide_begin(Index p) const { return wide_.start[p]; }
+  Index wide_end(Index p) const { return wide_.start[p + 1]; }
+  const std::vector<Index>& wide_nodes() const { return wide_.nodes; }
+  const std::vector<double>& wide_values() const { return wide_.N; }
+  const std::vector<double>& wide_gradients() const { return wide_.gradients; }
   /// With the volume average and a wide stencil: the active nodes (ascending) of the stencils of
   /// active cell ci's averaged points, which the average couples; empty otherwise.
   std::span<const Index> averaged_stencil_union(Index ci) const;
@@ -162,9 +158,6 @@ class GridSystem {
   template <class E>
   void initialise_typed(MaterialPoints& points);
   void map_to_nodes(const MaterialPoints& points);
-  void build_gimp_stencils(const MaterialPoints& points, std::vector<char>& is_active);
-  template <class E>
-  void build_dual_domain_stencils(const MaterialPoints& points);
   void build_averaged_stencil_unions(const MaterialPoints& points);
   void colour_active_cells();
 
@@ -188,13 +181,9 @@ class GridSystem {
   std::vector<double> gradients_;  // nen * dim per point (dN/dX at the start of the step)
   Vector mass_, velocity_, acceleration_;
 
-  std::optional<RectilinearGrid> rectilinear_;  // GIMP only
-
-  // Wide stencils (DDMP, GIMP): each point's nodes (active ids, ascending), weights N (DDMP:
-  // the cell's shape values, zero outside it) and reference gradients (dim per entry); point p
-  // spans [wide_start_[p], wide_start_[p + 1]).
-  std::vector<Index> wide_start_, wide_nodes_;
-  std::vector<double> wide_N_, wide_gradients_;
+  std::unique_ptr<Interpolation> interpolation_;
+  // Wide stencils (DDMP, GIMP; DDMP's weights are the cell's shape values, zero outside it).
+  WideStencils wide_;
   // With the volume average: per active cell ci, the union of its averaged points' stencils
   // (active ids, ascending) spans [union_start_[ci], union_start_[ci + 1]).
   std::vector<Index> union_start_, union_nodes_;
@@ -204,7 +193,7 @@ template <class F>
 void GridSystem::for_each_weight(const MaterialPoints& points, Index p, F&& f) const {
   // The one place that knows the difference, for mapping, loads and convect.
   if (wide_stencil()) {
-    for (Index a = wide_start_[p]; a < wide_start_[p + 1]; ++a) f(wide_nodes_[a], wide_N_[a]);
+    for (Index a = wide_.start[p]; a < wide_.start[p + 1]; ++a) f(wide_.nodes[a], wide_.N[a]);
     return;
   }
   const auto nodes = mesh_.cell_nodes(points.cell[p]);

@@ -16,7 +16,7 @@
 
 #include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
-#include "geompm/physics/gimp_weights.hpp"
+#include "geompm/interpolation/gimp_weights.hpp"
 #include "grid_harness.hpp"
 #include "run_model.hpp"
 

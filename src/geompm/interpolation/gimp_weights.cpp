@@ -1,4 +1,4 @@
-#include "geompm/physics/gimp_weights.hpp"
+#include "geompm/interpolation/gimp_weights.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -2,7 +2,7 @@
 // linear fields (eqs. 9.6), gradients against finite differences of the weights, the closed form
 // of Bardenhagen & Kober (2004) on a uniform grid, clipping at the mesh boundary and at the axis,
 // and the tensor-product stencils in 2D and 3D.
-#include "geompm/physics/gimp_weights.hpp"
+#include "geompm/interpolation/gimp_weights.hpp"
 
 #include <gtest/gtest.h>
 
