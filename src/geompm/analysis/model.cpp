@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "geompm/analysis/geostatic_stress.hpp"
@@ -128,16 +129,8 @@ void check_boundary(const Mesh& mesh, const std::string& boundary, const SourceL
                                          boundary, group_names(mesh.node_groups)));
 }
 
-}  // namespace
-
-std::unique_ptr<Model> build_model(const spec::Model& spec) {
-  auto model = std::make_unique<Model>();
-  model->spec = spec;
-  model->mesh = make_mesh(spec);
-  add_node_sets(spec, model->mesh);
-  const Mesh& mesh = model->mesh;
-  const int dim = mesh.dim();
-  model->topology = build_mesh_topology(mesh);
+// Numerical options the mesh cannot carry.
+void check_numerics_fit_mesh(const spec::Model& spec, const Mesh& mesh) {
   if (spec.numerics.interpolation == spec::Interpolation::Gimp) {
     // GIMP weights are tensor products along grid lines (docs/theory.md §9).
     std::string why;
@@ -153,109 +146,158 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
     throw InputError(spec.numerics.ghost_penalty_source,
                      "ghost_penalty needs linear cells (tri3, quad4, tet4, hex8), but the mesh "
                      "has tri6 cells; use a linear mesh or leave the ghost penalty off");
-  model->locator = std::make_unique<PointLocator>(mesh);
+}
 
+void create_materials(const spec::Model& spec, Model& model) {
   for (const auto& m : spec.materials) {
     try {
-      model->materials.push_back(create_material(m.model, m.parameters));
+      model.materials.push_back(create_material(m.model, m.parameters));
     } catch (const ParameterError& e) {
       SourceLocation where = m.source;
       where.key_path += "." + e.key();
       throw InputError(where, e.what());
     }
   }
+}
 
-  // Mesh bounds, to report bodies that stick out of the mesh.
+/// The box the mesh's nodes span, and a tolerance of coordinates relative to its size.
+struct MeshBounds {
+  Vec3 lo, hi;
+  double tol = 0.0;
+};
+
+// Mesh bounds, to report bodies that stick out of the mesh.
+MeshBounds mesh_bounds(const Mesh& mesh) {
+  const int dim = mesh.dim();
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
   for (const auto& x : mesh.nodes) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
   const double tol = 1e-9 * (hi - lo).head(dim).norm();
+  return {lo, hi, tol};
+}
 
+void check_body_inside_mesh(const spec::Body& body, const RegionTest& region,
+                            const MeshBounds& mesh_box, int dim) {
+  const Vec3& lo = mesh_box.lo;
+  const Vec3& hi = mesh_box.hi;
+  const double tol = mesh_box.tol;
+  if (auto box = region.bounds()) {
+    for (int d = 0; d < dim; ++d)
+      if (box->first(d) < lo(d) - tol || box->second(d) > hi(d) + tol)
+        throw InputError(
+            body.region.source,
+            fmt::format("body '{}' reaches outside the mesh: its region spans "
+                        "[{}, {}] in {} but the mesh spans [{}, {}]",
+                        body.name, box->first(d), box->second(d), "xyz"[d], lo(d), hi(d)));
+  }
+}
+
+// One material point of body b at a seeding position of cell c: its material (by its layer),
+// its point-dependent state and its initial velocity.
+void add_body_point(const spec::Model& spec, std::size_t b, const SeedPoint& s, Index c,
+                    const std::array<Expression, 3>& v0, Model& model) {
+  const spec::Body& body = spec.bodies[b];
+  const int dim = model.mesh.dim();
+  const Index material = body_material_at(spec, body, s.position(dim - 1));
+  const Index p =
+      model.points.add(static_cast<Index>(b), material, s.position, s.volume,
+                       model.materials[material]->density(), c, s.xi, s.half_size, s.top_offset);
+  // Point-dependent state, e.g. a strength growing with depth.
+  try {
+    model.materials[material]->initialise_point(s.position, dim, model.points.internal[p]);
+  } catch (const ParameterError& e) {
+    SourceLocation where = spec.materials[material].source;
+    where.key_path += "." + e.key();
+    throw InputError(where,
+                     fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')", e.what(),
+                                 s.position.x(), s.position.y(), s.position.z(), body.name));
+  }
+  for (int d = 0; d < dim; ++d)
+    model.points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
+}
+
+// The material points of body b: the seeding positions of every cell inside its region,
+// which none of the bodies before it (`regions` 0..b-1) may hold as well. `regions[b]` is its
+// own.
+void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionTest>& regions,
+               Model& model) {
+  const spec::Body& body = spec.bodies[b];
+  const Mesh& mesh = model.mesh;
   const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
-  std::vector<RegionTest> body_regions;
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
-    const auto& body = spec.bodies[b];
-    body_regions.emplace_back(body.region, mesh, dim);
-    if (auto box = body_regions.back().bounds()) {
-      for (int d = 0; d < dim; ++d)
-        if (box->first(d) < lo(d) - tol || box->second(d) > hi(d) + tol)
+  std::array<Expression, 3> v0;
+  for (int d = 0; d < 3; ++d) v0[d] = Expression(body.initial_velocity[d]);
+
+  const Index before = model.points.size();
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (body.region.kind == spec::Region::Kind::Group && !regions[b].contains(Vec3::Zero(), c))
+      continue;
+    std::vector<SeedPoint> seeds;
+    try {
+      seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(body.points_per_cell_source, e.what());
+    }
+    for (const auto& s : seeds) {
+      if (!regions[b].contains(s.position, c)) continue;
+      for (std::size_t other = 0; other < b; ++other)
+        if (regions[other].contains(s.position, c))
           throw InputError(
               body.region.source,
-              fmt::format("body '{}' reaches outside the mesh: its region spans "
-                          "[{}, {}] in {} but the mesh spans [{}, {}]",
-                          body.name, box->first(d), box->second(d), "xyz"[d], lo(d), hi(d)));
+              fmt::format("bodies '{}' and '{}' overlap (at x = [{:g}, {:g}, {:g}])", body.name,
+                          spec.bodies[other].name, s.position.x(), s.position.y(), s.position.z()));
+      add_body_point(spec, b, s, c, v0, model);
     }
-    std::array<Expression, 3> v0;
-    for (int d = 0; d < 3; ++d) v0[d] = Expression(body.initial_velocity[d]);
-
-    const Index before = model->points.size();
-    for (Index c = 0; c < mesh.num_cells(); ++c) {
-      if (body.region.kind == spec::Region::Kind::Group &&
-          !body_regions.back().contains(Vec3::Zero(), c))
-        continue;
-      std::vector<SeedPoint> seeds;
-      try {
-        seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(body.points_per_cell_source, e.what());
-      }
-      for (const auto& s : seeds) {
-        if (!body_regions.back().contains(s.position, c)) continue;
-        for (std::size_t other = 0; other < b; ++other)
-          if (body_regions[other].contains(s.position, c))
-            throw InputError(body.region.source,
-                             fmt::format("bodies '{}' and '{}' overlap (at x = [{:g}, {:g}, {:g}])",
-                                         body.name, spec.bodies[other].name, s.position.x(),
-                                         s.position.y(), s.position.z()));
-        const Index material = body_material_at(spec, body, s.position(dim - 1));
-        const Index p = model->points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                          model->materials[material]->density(), c, s.xi,
-                                          s.half_size, s.top_offset);
-        // Point-dependent state, e.g. a strength growing with depth.
-        try {
-          model->materials[material]->initialise_point(s.position, dim, model->points.internal[p]);
-        } catch (const ParameterError& e) {
-          SourceLocation where = spec.materials[material].source;
-          where.key_path += "." + e.key();
-          throw InputError(
-              where, fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')", e.what(),
-                                 s.position.x(), s.position.y(), s.position.z(), body.name));
-        }
-        for (int d = 0; d < dim; ++d)
-          model->points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
-      }
-    }
-    if (model->points.size() == before)
-      throw InputError(body.region.source,
-                       fmt::format("body '{}' has no material points: its region holds no "
-                                   "seeding position of any cell",
-                                   body.name));
   }
+  if (model.points.size() == before)
+    throw InputError(body.region.source,
+                     fmt::format("body '{}' has no material points: its region holds no "
+                                 "seeding position of any cell",
+                                 body.name));
+}
 
+void seed_bodies(const spec::Model& spec, Model& model) {
+  const Mesh& mesh = model.mesh;
+  const int dim = mesh.dim();
+  const MeshBounds mesh_box = mesh_bounds(mesh);
+  std::vector<RegionTest> body_regions;
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    body_regions.emplace_back(spec.bodies[b].region, mesh, dim);
+    check_body_inside_mesh(spec.bodies[b], body_regions.back(), mesh_box, dim);
+    seed_body(spec, b, body_regions, model);
+  }
+}
+
+// Point set k as bit k of each point's set mask: the points of its body (any, if it names
+// none) in its region.
+void add_point_sets(const spec::Model& spec, Model& model) {
+  const Mesh& mesh = model.mesh;
+  const int dim = mesh.dim();
   if (spec.point_sets.size() > 64)
     throw InputError(spec.point_sets[64].source, "at most 64 point sets are supported");
   for (std::size_t k = 0; k < spec.point_sets.size(); ++k) {
     const auto& set = spec.point_sets[k];
-    model->point_set_names.push_back(set.name);
+    model.point_set_names.push_back(set.name);
     RegionTest region(set.region, mesh, dim);
     Index body = -1;
     for (std::size_t b = 0; b < spec.bodies.size(); ++b)
       if (spec.bodies[b].name == set.body) body = static_cast<Index>(b);
     Index count = 0;
-    for (Index p = 0; p < model->points.size(); ++p) {
-      if (body >= 0 && model->points.body[p] != body) continue;
-      if (!region.contains(model->points.position[p], model->points.cell[p])) continue;
-      model->points.sets[p] |= std::uint64_t{1} << k;
+    for (Index p = 0; p < model.points.size(); ++p) {
+      if (body >= 0 && model.points.body[p] != body) continue;
+      if (!region.contains(model.points.position[p], model.points.cell[p])) continue;
+      model.points.sets[p] |= std::uint64_t{1} << k;
       ++count;
     }
     if (count == 0)
       throw InputError(set.source, fmt::format("point set '{}' holds no material point", set.name));
   }
+}
 
-  // Fixities and grid motions are resolved again when their phase starts; resolving them here
-  // reports a plane with no node, or a node driven twice, before the run starts.
+// Fixities and grid motions are resolved again when their phase starts; resolving them here
+// reports a plane with no node, or a node driven twice, before the run starts.
+void check_boundaries(const spec::Model& spec, const Mesh& mesh) {
   for (const auto& phase : spec.phases) {
     for (const auto& fixity : phase.fixities) check_boundary(mesh, fixity.boundary, fixity.source);
     for (const auto& motion : phase.grid_motions)
@@ -265,6 +307,23 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   }
   for (const auto& history : spec.output.histories)
     check_boundary(mesh, history.boundary, history.source);
+}
+
+}  // namespace
+
+std::unique_ptr<Model> build_model(const spec::Model& spec) {
+  auto model = std::make_unique<Model>();
+  model->spec = spec;
+  model->mesh = make_mesh(spec);
+  add_node_sets(spec, model->mesh);
+  const Mesh& mesh = model->mesh;
+  model->topology = build_mesh_topology(mesh);
+  check_numerics_fit_mesh(spec, mesh);
+  model->locator = std::make_unique<PointLocator>(mesh);
+  create_materials(spec, *model);
+  seed_bodies(spec, *model);
+  add_point_sets(spec, *model);
+  check_boundaries(spec, mesh);
   // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §10), before any step.
   apply_k0_procedure(*model);
   return model;

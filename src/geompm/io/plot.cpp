@@ -171,6 +171,158 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
+/// The curves to draw, and the ranges of their drawable points.
+struct PlotData {
+  std::vector<Curve> curves;
+  Range x_range, y_range;
+};
+
+// The request's y columns against its x column, scaled.
+PlotData read_curves(const PlotRequest& request, const std::string& csv_name) {
+  const CsvTable table = read_csv(request.csv);
+  const std::size_t x_column = table.column(request.x, csv_name);
+  PlotData data;
+  for (const auto& name : request.y) {
+    const std::size_t y_column = table.column(name, csv_name);
+    Curve curve{name, {}, {}};
+    for (const auto& row : table.rows) {
+      curve.x.push_back(row[x_column] * request.x_scale);
+      curve.y.push_back(row[y_column] * request.y_scale);
+      // A point counts for the range only if it can be drawn, i.e. both coordinates are finite.
+      if (std::isfinite(curve.x.back()) && std::isfinite(curve.y.back())) {
+        data.x_range.include(curve.x.back());
+        data.y_range.include(curve.y.back());
+      }
+    }
+    data.curves.push_back(std::move(curve));
+  }
+  return data;
+}
+
+struct Fonts {
+  gdFontPtr title = gdFontGetGiant();
+  gdFontPtr label = gdFontGetMediumBold();
+  gdFontPtr small = gdFontGetSmall();
+};
+
+/// Where everything goes: the image's size, the frame's edges, the axes and the legend's sample
+/// line, and the map from data to pixels.
+struct Layout {
+  int width = 0, height = 0;
+  int top = 0, bottom = 0, left = 0, right = 0;
+  int legend_sample = 24;
+  Axis x_axis, y_axis;
+
+  double to_px(double x) const {
+    const double inner_left = left + kInset, inner_right = right - kInset;
+    return inner_left + (x - x_axis.lo) / (x_axis.hi - x_axis.lo) * (inner_right - inner_left);
+  }
+  double to_py(double y) const {
+    const double inner_top = top + kInset, inner_bottom = bottom - kInset;
+    return inner_bottom - (y - y_axis.lo) / (y_axis.hi - y_axis.lo) * (inner_bottom - inner_top);
+  }
+};
+
+// Layout. Vertical first: it fixes the height of the frame, hence the y ticks, whose labels
+// fix the left margin, hence the width of the frame and the x ticks.
+Layout lay_out(const PlotRequest& request, const PlotData& data, const Fonts& fonts) {
+  Layout l;
+  l.width = request.width;
+  l.height = request.height;
+  l.top = 12 + fonts.title->h + 12;
+  l.bottom = l.height - (kTickLength + 4 + fonts.small->h + 8 + fonts.label->h + 10);
+  l.y_axis = choose_axis(data.y_range.usable(), l.bottom - l.top - 2 * kInset, 40, fonts.small,
+                         /*labels_side_by_side=*/false);
+  l.left = 10 + fonts.label->h + 10 + l.y_axis.widest_label(fonts.small) + 4 + kTickLength;
+  int legend_width = 0;
+  for (const auto& c : data.curves)
+    legend_width = std::max(legend_width, text_width(fonts.small, c.name));
+  l.right = l.width - std::min(l.width / 3, 16 + l.legend_sample + 6 + legend_width + 10);
+  l.x_axis = choose_axis(data.x_range.usable(), l.right - l.left - 2 * kInset, 70, fonts.small,
+                         /*labels_side_by_side=*/true);
+  return l;
+}
+
+// Grid, ticks and tick labels.
+void draw_grid_and_ticks(gdImagePtr im, const Layout& l, const Fonts& fonts, int black, int grid) {
+  for (std::size_t i = 0; i < l.x_axis.ticks.size(); ++i) {
+    const int px = pixel(l.to_px(l.x_axis.ticks[i]));
+    gdImageLine(im, px, l.top + 1, px, l.bottom - 1, grid);
+    gdImageLine(im, px, l.bottom, px, l.bottom + kTickLength, black);
+    draw_text(im, fonts.small, px - text_width(fonts.small, l.x_axis.labels[i]) / 2,
+              l.bottom + kTickLength + 4, l.x_axis.labels[i], black);
+  }
+  for (std::size_t i = 0; i < l.y_axis.ticks.size(); ++i) {
+    const int py = pixel(l.to_py(l.y_axis.ticks[i]));
+    gdImageLine(im, l.left + 1, py, l.right - 1, py, grid);
+    gdImageLine(im, l.left - kTickLength, py, l.left, py, black);
+    draw_text(im, fonts.small,
+              l.left - kTickLength - 4 - text_width(fonts.small, l.y_axis.labels[i]),
+              py - fonts.small->h / 2, l.y_axis.labels[i], black);
+  }
+}
+
+// Curves, clipped to the inside of the frame. A point with no drawable neighbour (a single
+// row, or one between gaps) would draw nothing as a line, so it gets a small square.
+void draw_curves(gdImagePtr im, const Layout& l, const std::vector<Curve>& curves) {
+  gdImageSetClip(im, l.left + 1, l.top + 1, l.right - 1, l.bottom - 1);
+  gdImageSetThickness(im, 2);
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const Curve& curve = curves[c];
+    const int colour = allocate(im, plot_line_colour(c));
+    auto drawable = [&](std::size_t i) {
+      return i < curve.x.size() && std::isfinite(curve.x[i]) && std::isfinite(curve.y[i]);
+    };
+    for (std::size_t i = 0; i < curve.x.size(); ++i) {
+      if (!drawable(i)) continue;
+      const int px = pixel(l.to_px(curve.x[i]));
+      const int py = pixel(l.to_py(curve.y[i]));
+      if (drawable(i + 1)) {
+        gdImageLine(im, px, py, pixel(l.to_px(curve.x[i + 1])), pixel(l.to_py(curve.y[i + 1])),
+                    colour);
+      } else if (i == 0 || !drawable(i - 1)) {
+        gdImageFilledRectangle(im, px - 2, py - 2, px + 2, py + 2, colour);
+      }
+    }
+  }
+  gdImageSetThickness(im, 1);
+  gdImageSetClip(im, 0, 0, l.width - 1, l.height - 1);
+}
+
+// Title, axis labels, legend.
+void draw_labels_and_legend(gdImagePtr im, const Layout& l, const Fonts& fonts,
+                            const PlotRequest& request, const std::vector<Curve>& curves,
+                            int black) {
+  const std::string title = request.title.empty() ? request.csv.filename().string() : request.title;
+  const std::string x_label = request.x_label.empty() ? request.x : request.x_label;
+  const std::string y_label = request.y_label.empty() ? joined(request.y) : request.y_label;
+  draw_text(im, fonts.title, std::max(4, (l.left + l.right - text_width(fonts.title, title)) / 2),
+            12, title, black);
+  draw_text(im, fonts.label, std::max(4, (l.left + l.right - text_width(fonts.label, x_label)) / 2),
+            l.height - 10 - fonts.label->h, x_label, black);
+  draw_text_up(im, fonts.label, 10, (l.top + l.bottom) / 2, y_label, black);
+  gdImageSetThickness(im, 2);
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const int y = l.top + 8 + static_cast<int>(c) * (fonts.small->h + 6);
+    const int colour = allocate(im, plot_line_colour(c));
+    gdImageLine(im, l.right + 16, y + fonts.small->h / 2, l.right + 16 + l.legend_sample,
+                y + fonts.small->h / 2, colour);
+    gdImageSetThickness(im, 1);
+    draw_text(im, fonts.small, l.right + 16 + l.legend_sample + 6, y, curves[c].name, black);
+    gdImageSetThickness(im, 2);
+  }
+  gdImageSetThickness(im, 1);
+}
+
+void write_png(gdImagePtr im, const std::filesystem::path& png) {
+  int size = 0;
+  void* bytes = gdImagePngPtr(im, &size);
+  if (!bytes) throw RunError("cannot encode the plot " + png.string() + " as PNG");
+  const std::string content(static_cast<const char*>(bytes), static_cast<std::size_t>(size));
+  gdFree(bytes);
+  write_file_atomically(png, content);
+}
+
 }  // namespace
 
 unsigned plot_line_colour(std::size_t column_index) {
@@ -184,57 +336,10 @@ void plot_history(const PlotRequest& request, const std::filesystem::path& png) 
     throw InputError(fmt::format("plot {}: size {}x{} is too small (at least 200x150 pixels)",
                                  png.string(), request.width, request.height));
 
-  const CsvTable table = read_csv(request.csv);
-  const std::size_t x_column = table.column(request.x, csv_name);
-  std::vector<Curve> curves;
-  Range x_range, y_range;
-  for (const auto& name : request.y) {
-    const std::size_t y_column = table.column(name, csv_name);
-    Curve curve{name, {}, {}};
-    for (const auto& row : table.rows) {
-      curve.x.push_back(row[x_column] * request.x_scale);
-      curve.y.push_back(row[y_column] * request.y_scale);
-      // A point counts for the range only if it can be drawn, i.e. both coordinates are finite.
-      if (std::isfinite(curve.x.back()) && std::isfinite(curve.y.back())) {
-        x_range.include(curve.x.back());
-        y_range.include(curve.y.back());
-      }
-    }
-    curves.push_back(std::move(curve));
-  }
-
-  const std::string title = request.title.empty() ? request.csv.filename().string() : request.title;
-  const std::string x_label = request.x_label.empty() ? request.x : request.x_label;
-  const std::string y_label = request.y_label.empty() ? joined(request.y) : request.y_label;
-
-  gdFontPtr title_font = gdFontGetGiant();
-  gdFontPtr label_font = gdFontGetMediumBold();
-  gdFontPtr small_font = gdFontGetSmall();
-
-  // Layout. Vertical first: it fixes the height of the frame, hence the y ticks, whose labels
-  // fix the left margin, hence the width of the frame and the x ticks.
-  const int width = request.width, height = request.height;
-  const int top = 12 + title_font->h + 12;
-  const int bottom = height - (kTickLength + 4 + small_font->h + 8 + label_font->h + 10);
-  const Axis y_axis = choose_axis(y_range.usable(), bottom - top - 2 * kInset, 40, small_font,
-                                  /*labels_side_by_side=*/false);
-  const int left = 10 + label_font->h + 10 + y_axis.widest_label(small_font) + 4 + kTickLength;
-  int legend_width = 0;
-  for (const auto& c : curves)
-    legend_width = std::max(legend_width, text_width(small_font, c.name));
-  const int legend_sample = 24;
-  const int right = width - std::min(width / 3, 16 + legend_sample + 6 + legend_width + 10);
-  const Axis x_axis = choose_axis(x_range.usable(), right - left - 2 * kInset, 70, small_font,
-                                  /*labels_side_by_side=*/true);
-
-  const double inner_left = left + kInset, inner_right = right - kInset;
-  const double inner_top = top + kInset, inner_bottom = bottom - kInset;
-  auto to_px = [&](double x) {
-    return inner_left + (x - x_axis.lo) / (x_axis.hi - x_axis.lo) * (inner_right - inner_left);
-  };
-  auto to_py = [&](double y) {
-    return inner_bottom - (y - y_axis.lo) / (y_axis.hi - y_axis.lo) * (inner_bottom - inner_top);
-  };
+  const PlotData data = read_curves(request, csv_name);
+  const Fonts fonts;
+  const Layout layout = lay_out(request, data, fonts);
+  const int width = layout.width, height = layout.height;
 
   Image image(gdImageCreateTrueColor(width, height), gdImageDestroy);
   if (!image)
@@ -245,71 +350,11 @@ void plot_history(const PlotRequest& request, const std::filesystem::path& png) 
   const int grid = allocate(im, 0xe6e6e6);
   gdImageFilledRectangle(im, 0, 0, width - 1, height - 1, white);
 
-  // Grid, ticks and tick labels.
-  for (std::size_t i = 0; i < x_axis.ticks.size(); ++i) {
-    const int px = pixel(to_px(x_axis.ticks[i]));
-    gdImageLine(im, px, top + 1, px, bottom - 1, grid);
-    gdImageLine(im, px, bottom, px, bottom + kTickLength, black);
-    draw_text(im, small_font, px - text_width(small_font, x_axis.labels[i]) / 2,
-              bottom + kTickLength + 4, x_axis.labels[i], black);
-  }
-  for (std::size_t i = 0; i < y_axis.ticks.size(); ++i) {
-    const int py = pixel(to_py(y_axis.ticks[i]));
-    gdImageLine(im, left + 1, py, right - 1, py, grid);
-    gdImageLine(im, left - kTickLength, py, left, py, black);
-    draw_text(im, small_font, left - kTickLength - 4 - text_width(small_font, y_axis.labels[i]),
-              py - small_font->h / 2, y_axis.labels[i], black);
-  }
-
-  // Curves, clipped to the inside of the frame. A point with no drawable neighbour (a single
-  // row, or one between gaps) would draw nothing as a line, so it gets a small square.
-  gdImageSetClip(im, left + 1, top + 1, right - 1, bottom - 1);
-  gdImageSetThickness(im, 2);
-  for (std::size_t c = 0; c < curves.size(); ++c) {
-    const Curve& curve = curves[c];
-    const int colour = allocate(im, plot_line_colour(c));
-    auto drawable = [&](std::size_t i) {
-      return i < curve.x.size() && std::isfinite(curve.x[i]) && std::isfinite(curve.y[i]);
-    };
-    for (std::size_t i = 0; i < curve.x.size(); ++i) {
-      if (!drawable(i)) continue;
-      const int px = pixel(to_px(curve.x[i]));
-      const int py = pixel(to_py(curve.y[i]));
-      if (drawable(i + 1)) {
-        gdImageLine(im, px, py, pixel(to_px(curve.x[i + 1])), pixel(to_py(curve.y[i + 1])), colour);
-      } else if (i == 0 || !drawable(i - 1)) {
-        gdImageFilledRectangle(im, px - 2, py - 2, px + 2, py + 2, colour);
-      }
-    }
-  }
-  gdImageSetThickness(im, 1);
-  gdImageSetClip(im, 0, 0, width - 1, height - 1);
-  gdImageRectangle(im, left, top, right, bottom, black);
-
-  // Title, axis labels, legend.
-  draw_text(im, title_font, std::max(4, (left + right - text_width(title_font, title)) / 2), 12,
-            title, black);
-  draw_text(im, label_font, std::max(4, (left + right - text_width(label_font, x_label)) / 2),
-            height - 10 - label_font->h, x_label, black);
-  draw_text_up(im, label_font, 10, (top + bottom) / 2, y_label, black);
-  gdImageSetThickness(im, 2);
-  for (std::size_t c = 0; c < curves.size(); ++c) {
-    const int y = top + 8 + static_cast<int>(c) * (small_font->h + 6);
-    const int colour = allocate(im, plot_line_colour(c));
-    gdImageLine(im, right + 16, y + small_font->h / 2, right + 16 + legend_sample,
-                y + small_font->h / 2, colour);
-    gdImageSetThickness(im, 1);
-    draw_text(im, small_font, right + 16 + legend_sample + 6, y, curves[c].name, black);
-    gdImageSetThickness(im, 2);
-  }
-  gdImageSetThickness(im, 1);
-
-  int size = 0;
-  void* bytes = gdImagePngPtr(im, &size);
-  if (!bytes) throw RunError("cannot encode the plot " + png.string() + " as PNG");
-  const std::string content(static_cast<const char*>(bytes), static_cast<std::size_t>(size));
-  gdFree(bytes);
-  write_file_atomically(png, content);
+  draw_grid_and_ticks(im, layout, fonts, black, grid);
+  draw_curves(im, layout, data.curves);
+  gdImageRectangle(im, layout.left, layout.top, layout.right, layout.bottom, black);
+  draw_labels_and_legend(im, layout, fonts, request, data.curves, black);
+  write_png(im, png);
 }
 
 }  // namespace geompm

@@ -56,8 +56,14 @@ struct PhysicalGroup {
   std::vector<std::size_t> node_tags;     // dim < mesh dimension: the boundary's nodes
 };
 
-Mesh read_open_model(const std::string& path, int dimension) {
-  const SourceLocation where{path, "", 0};
+/// The cells of the open model: one supported type, their Gmsh tags and node tags.
+struct GmshCells {
+  CellType type = CellType::Tri3;
+  std::vector<std::size_t> tags, node_tags;
+};
+
+// The model's cells of the mesh dimension, which must all be of one type geompm knows.
+GmshCells read_cells(const SourceLocation& where, int dimension) {
   const char* expected = dimension == 2 ? "triangles (tri3, tri6) or quadrangles (quad4)"
                                         : "tetrahedra (tet4) or hexahedra (hex8)";
 
@@ -76,12 +82,12 @@ Mesh read_open_model(const std::string& path, int dimension) {
     throw InputError(where, fmt::format("has mixed {}D cell types ({}); expected one type of {}",
                                         dimension, found, expected));
   }
+  return {*cell_type_of_gmsh(types[0]), std::move(element_tags[0]), std::move(element_nodes[0])};
+}
 
-  Mesh mesh;
-  mesh.cell_type = *cell_type_of_gmsh(types[0]);
-  const std::vector<std::size_t>& cell_tags = element_tags[0];
-  const std::vector<std::size_t>& cell_node_tags = element_nodes[0];
-
+// The physical groups up to the mesh dimension: regions of cells (of the mesh dimension) and
+// boundaries of nodes (of lower dimensions), unnamed ones named after their tag.
+std::vector<PhysicalGroup> read_physical_groups(int dimension) {
   std::vector<PhysicalGroup> groups;
   gmsh::vectorpair physical;
   gmsh::model::getPhysicalGroups(physical, -1);
@@ -107,26 +113,44 @@ Mesh read_open_model(const std::string& path, int dimension) {
     }
     groups.push_back(std::move(group));
   }
+  return groups;
+}
 
-  // Compact node ids to 0..n-1, in the order of the Gmsh tags, keeping only the nodes of the
-  // cells and of the boundaries (Gmsh also stores nodes of geometry points, for example).
-  std::vector<std::size_t> used(cell_node_tags);
+/// The Gmsh tags of the nodes geompm keeps, ascending, and the node id of each.
+struct NodeNumbering {
+  std::vector<std::size_t> used;
+  std::unordered_map<std::size_t, Index> index;
+};
+
+// Compact node ids to 0..n-1, in the order of the Gmsh tags, keeping only the nodes of the
+// cells and of the boundaries (Gmsh also stores nodes of geometry points, for example).
+NodeNumbering number_nodes(const std::vector<std::size_t>& cell_node_tags,
+                           const std::vector<PhysicalGroup>& groups) {
+  NodeNumbering numbering;
+  std::vector<std::size_t>& used = numbering.used;
+  used = cell_node_tags;
   for (const PhysicalGroup& group : groups)
     used.insert(used.end(), group.node_tags.begin(), group.node_tags.end());
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
-  std::unordered_map<std::size_t, Index> node_index;
+  std::unordered_map<std::size_t, Index>& node_index = numbering.index;
   node_index.reserve(used.size());
   for (std::size_t n = 0; n < used.size(); ++n) node_index.emplace(used[n], static_cast<Index>(n));
+  return numbering;
+}
 
+// The coordinates of the numbered nodes, each of which the file must define.
+void read_node_coordinates(const SourceLocation& where, const NodeNumbering& numbering,
+                           Mesh& mesh) {
+  const std::vector<std::size_t>& used = numbering.used;
   std::vector<std::size_t> all_tags;
   std::vector<double> coordinates, parametric;
   gmsh::model::mesh::getNodes(all_tags, coordinates, parametric, -1, -1, false, false);
   mesh.nodes.assign(used.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   std::vector<char> seen(used.size(), 0);
   for (std::size_t k = 0; k < all_tags.size(); ++k) {
-    const auto it = node_index.find(all_tags[k]);
-    if (it == node_index.end()) continue;
+    const auto it = numbering.index.find(all_tags[k]);
+    if (it == numbering.index.end()) continue;
     mesh.nodes[it->second] =
         Vec3(coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]);
     seen[it->second] = 1;
@@ -137,25 +161,28 @@ Mesh read_open_model(const std::string& path, int dimension) {
                                           "defined; "
                                           "expected every node in the $Nodes section",
                                           used[n]));
+}
 
-  if (dimension == 2) {
-    // A planar mesh written by Gmsh has z = 0 exactly; allow only round-off beyond that.
-    Vec3 lower = mesh.nodes[0], upper = mesh.nodes[0];
-    for (const Vec3& x : mesh.nodes) lower = lower.cwiseMin(x), upper = upper.cwiseMax(x);
-    const double round_off = 1e-12 * (upper - lower).norm();
-    for (std::size_t n = 0; n < used.size(); ++n) {
-      double& z = mesh.nodes[n][2];
-      if (std::abs(z) > round_off)
-        throw InputError(where, fmt::format("Gmsh node {} has z = {:g}; a 2D mesh must lie in the "
-                                            "plane z = 0 (x horizontal, y up)",
-                                            used[n], z));
-      z = 0.0;
-    }
+// A planar mesh written by Gmsh has z = 0 exactly; allow only round-off beyond that.
+void flatten_planar_nodes(const SourceLocation& where, const std::vector<std::size_t>& used,
+                          Mesh& mesh) {
+  Vec3 lower = mesh.nodes[0], upper = mesh.nodes[0];
+  for (const Vec3& x : mesh.nodes) lower = lower.cwiseMin(x), upper = upper.cwiseMax(x);
+  const double round_off = 1e-12 * (upper - lower).norm();
+  for (std::size_t n = 0; n < used.size(); ++n) {
+    double& z = mesh.nodes[n][2];
+    if (std::abs(z) > round_off)
+      throw InputError(where, fmt::format("Gmsh node {} has z = {:g}; a 2D mesh must lie in the "
+                                          "plane z = 0 (x horizontal, y up)",
+                                          used[n], z));
+    z = 0.0;
   }
+}
 
-  mesh.connectivity.reserve(cell_node_tags.size());
-  for (std::size_t tag : cell_node_tags) mesh.connectivity.push_back(node_index.at(tag));
-
+// The physical groups as the mesh's cell groups (regions) and node groups (boundaries), in
+// geompm's numbering, each sorted and without repeats.
+void add_groups(const std::vector<PhysicalGroup>& groups, const std::vector<std::size_t>& cell_tags,
+                const NodeNumbering& numbering, int dimension, Mesh& mesh) {
   std::unordered_map<std::size_t, Index> cell_index;
   cell_index.reserve(cell_tags.size());
   for (std::size_t c = 0; c < cell_tags.size(); ++c)
@@ -171,11 +198,25 @@ Mesh read_open_model(const std::string& path, int dimension) {
     } else {
       // Groups of several lower dimensions may share a name (a curve and its end points).
       std::vector<Index>& nodes = mesh.node_groups[group.name];
-      for (std::size_t tag : group.node_tags) nodes.push_back(node_index.at(tag));
+      for (std::size_t tag : group.node_tags) nodes.push_back(numbering.index.at(tag));
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     }
   }
+}
+
+Mesh read_open_model(const std::string& path, int dimension) {
+  const SourceLocation where{path, "", 0};
+  const GmshCells cells = read_cells(where, dimension);
+  Mesh mesh;
+  mesh.cell_type = cells.type;
+  const std::vector<PhysicalGroup> groups = read_physical_groups(dimension);
+  const NodeNumbering numbering = number_nodes(cells.node_tags, groups);
+  read_node_coordinates(where, numbering, mesh);
+  if (dimension == 2) flatten_planar_nodes(where, numbering.used, mesh);
+  mesh.connectivity.reserve(cells.node_tags.size());
+  for (std::size_t tag : cells.node_tags) mesh.connectivity.push_back(numbering.index.at(tag));
+  add_groups(groups, cells.tags, numbering, dimension, mesh);
   return mesh;
 }
 
