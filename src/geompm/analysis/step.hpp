@@ -54,6 +54,11 @@ class StepSolver {
   StepResult advance(PhaseContext& phase, double t0, double dt);
 
   GridSystem& grid() { return grid_; }
+  const GridSystem& grid() const { return grid_; }
+
+  /// The last step's rate of the extrapolated start, as a checkpoint saves and restores it.
+  const std::vector<double>& last_rate() const { return last_rate_; }
+  void restore_last_rate(std::vector<double> rate) { last_rate_ = std::move(rate); }
 
   /// Forgets the last step's increment, so that the phase's first step does not extrapolate the
   /// previous phase's path (`newton: {predictor: extrapolated}`), and the last nodal pressure

@@ -151,6 +151,9 @@ class GridSystem {
   /// Forgets the last converged nodal pressure (eq. 11.11), so that a phase's first step starts
   /// from its points' pressures.
   void forget_pressure_field() { last_pressure_.clear(); }
+  /// That pressure, as a checkpoint saves it (empty when there is none) and restores it.
+  const std::vector<double>& last_pressure() const { return last_pressure_; }
+  void restore_last_pressure(std::vector<double> pressure) { last_pressure_ = std::move(pressure); }
 
   // --- grid data --------------------------------------------------------------------------
   int dim() const { return dim_; }

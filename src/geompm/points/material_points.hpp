@@ -11,6 +11,9 @@
 
 namespace geompm {
 
+class ByteWriter;
+class ByteReader;
+
 /// Material-model history variables per point (equivalent plastic strain, ...); the material
 /// says how many of these it uses.
 inline constexpr int max_internal_variables = 4;
@@ -68,6 +71,11 @@ struct MaterialPoints {
 
   /// Sorts the points by cell (stable), so that a cell's points are contiguous in memory.
   void sort_by_cell();
+
+  /// Writes every array (a checkpoint's "points" section), bit for bit, in the points' order.
+  void save(ByteWriter& out) const;
+  /// Replaces every array by what save() wrote; throws InputError if the arrays' lengths differ.
+  void load(ByteReader& in);
 
   /// Bytes held per point by the arrays (capacity included), for docs/performance.md.
   double bytes_per_point() const;
