@@ -170,7 +170,6 @@ void Simulation::accept(const StepResult& step, double dt) {
   summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
   phase.max_iterations_in_a_step = std::max(phase.max_iterations_in_a_step, iterations);
   summary_.residual_histories.push_back(step.newton.residuals);
-  summary_.time = time_;
 
   const bool phase_done = control_->finished();
   const int vtk_every = model_.spec.output.vtk_every;
@@ -217,6 +216,7 @@ void Simulation::stop(const std::string& message) {
 void Simulation::finish(const std::string& stop_reason) {
   progress_.finish();
   summary_.status = stop_reason.empty() ? "finished" : "stopped";
+  summary_.time = time_;
   summary_.reason = stop_reason.empty() ? "finished" : stop_reason;
   summary_.wall_seconds = wall_before_ + seconds_since(started_);
   summary_.lost_mass = model_.lost_mass;

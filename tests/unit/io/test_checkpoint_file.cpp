@@ -211,10 +211,10 @@ TEST_F(CheckpointFile, RefusesAFileWithAnyByteChanged) {
     const std::string message = read_error(file, kHash);
     EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
     // Where the byte is says which check finds it.
-    const char* expected = k < 8                            ? "not a geompm checkpoint"
-                           : k < 12                         ? "checkpoint format version"
+    const char* expected = k < 8                             ? "not a geompm checkpoint"
+                           : k < 12                          ? "checkpoint format version"
                            : k < checkpoint_header_bytes - 8 ? "checkpoint ("  // the length
-                                                            : "damaged checkpoint";
+                                                             : "damaged checkpoint";
     EXPECT_NE(message.find(expected), std::string::npos) << "byte " << k << ": " << message;
   }
 }
