@@ -109,6 +109,18 @@ class Checkpoints : public GeompmRunTest<> {
     return was_running;
   }
 
+  /// Runs `run.yaml` into "killed" with `args`, killed half-way through writing its n-th
+  /// checkpoint (GEOMPM_TEST_KILL_IN_CHECKPOINT).
+  CommandResult kill_in_checkpoint(int n, const std::vector<std::string>& args) {
+    fs::remove_all(work() / "killed");
+    std::vector<std::string> all = {"run", "-q", "-t", "1", "-o", "killed"};
+    all.insert(all.end(), args.begin(), args.end());
+    all.push_back("run.yaml");
+    GeompmProcess run(all, work(), root_ / "capture",
+                      {{"GEOMPM_TEST_KILL_IN_CHECKPOINT", std::to_string(n)}});
+    return run.wait();
+  }
+
   /// Resumes "killed" and checks that it ends as "reference" did, after `resumes` resumes.
   void resume_and_compare(std::size_t resumes = 1) {
     const auto r = geompm({"run", "-q", "-t", "1", "-o", "killed", "--resume", "run.yaml"});
@@ -170,16 +182,14 @@ TEST_F(Checkpoints, AStripFootingKilledAtRandomResumesExactly) {
   kill_at_random_and_resume(model, 2);
 }
 
-// Killed while it writes its third checkpoint (steps 10, 20, 30): the temporary file is half
-// written, checkpoint.bin is still the one of step 20, and the resumed run goes on from there.
+// Killed while it writes its third checkpoint (--checkpoint-every 10: steps 10, 20, 30): the
+// temporary file is half written, checkpoint.bin is still the one of step 20, and the resumed run
+// goes on from there (with the model's schedule: checkpoints never change the results).
 TEST_F(Checkpoints, AKillWhileACheckpointIsWrittenResumesFromTheOneBefore) {
   const std::string model = example_text("vibrating_bar/vibrating_bar.yaml");
   run_reference(model);
-  write("run.yaml", with_checkpoints(model, "{every_steps: 10}"));
-  fs::remove_all(work() / "killed");
-  GeompmProcess run({"run", "-q", "-t", "1", "-o", "killed", "run.yaml"}, work(), root_ / "capture",
-                    {{"GEOMPM_TEST_KILL_IN_CHECKPOINT", "3"}});
-  const CommandResult r = run.wait();
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(3, {"--checkpoint-every", "10"});
   ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
   const fs::path dir = work() / "killed";
   ASSERT_TRUE(fs::exists(dir / "checkpoint.bin.tmp")) << "the half-written checkpoint";
@@ -191,6 +201,24 @@ TEST_F(Checkpoints, AKillWhileACheckpointIsWrittenResumesFromTheOneBefore) {
   // resume_and_compare() resumes once more: from the run's final checkpoint, with nothing left
   // to do, which must change nothing either.
   resume_and_compare(2);
+}
+
+// Checkpoints only at the ends of phases (--checkpoint-every 0; every 10 minutes is never
+// reached), killed in the second: the run resumes at the start of the second phase of the
+// Rankine wall (K0 geostatic phase, then the wall pushed; examples/earth_pressure).
+TEST_F(Checkpoints, AKillInTheSecondPhaseResumesAtItsStart) {
+  const std::string model = example_text("earth_pressure/rankine_active.yaml");
+  run_reference(model);
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "0"});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  const auto resumed = geompm({"run", "-q", "-t", "1", "-o", "killed", "--resume", "run.yaml"});
+  EXPECT_TRUE(Contains(resumed.err, "resuming from killed/checkpoint.bin: phase 'geostatic'"))
+      << describe(resumed);
+  resume_and_compare(2);
+  const auto phases = read_json(work() / "killed" / "summary.json").at("phases");
+  ASSERT_EQ(phases.size(), 2u);
+  for (const auto& phase : phases) EXPECT_EQ(phase.at("status"), "finished");
 }
 
 // A checkpoint that cannot be used: exit 2, a message naming the file and the problem, and
