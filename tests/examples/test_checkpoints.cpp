@@ -209,6 +209,20 @@ TEST_F(Checkpoints, AKillWhileACheckpointIsWrittenResumesFromTheOneBefore) {
   resume_and_compare(2);
 }
 
+// Checkpoints by wall-clock time only (every 0.002 min = 0.12 s of a run of about two seconds):
+// the third is written long before the end, and a kill in it resumes from the second.
+TEST_F(Checkpoints, CheckpointsByWallClockTime) {
+  const std::string model = replace_once(example_text("vibrating_bar/vibrating_bar.yaml"),
+                                         "duration: 50", "duration: 250");
+  run_reference(model);
+  write("run.yaml", with_checkpoints(model, "{every_steps: 0, every_minutes: 0.002}"));
+  const CommandResult r = kill_in_checkpoint(3, {});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  const std::size_t rows = read_csv(work() / "killed" / "history.csv").rows.size();
+  EXPECT_LT(rows, 2501u) << "killed before the end of the run";
+  resume_and_compare();
+}
+
 // Checkpoints only at the ends of phases (--checkpoint-every 0; every 10 minutes is never
 // reached), killed in the second: the run resumes at the start of the second phase of the
 // Rankine wall (K0 geostatic phase, then the wall pushed; examples/earth_pressure).
@@ -304,6 +318,28 @@ TEST_F(BadCheckpoints, NoCheckpoint) {
   ASSERT_TRUE(r.exited && r.exit_code == 2) << describe(r);
   EXPECT_TRUE(Contains(r.err, "error: nowhere/checkpoint.bin: no checkpoint to resume from"));
   EXPECT_FALSE(fs::exists(work() / "nowhere")) << "nothing is written";
+}
+
+// The files a resumed run appends to must still hold what they held at the checkpoint; both are
+// checked before either is cut back.
+TEST_F(BadCheckpoints, OutputFilesCutShorterThanTheCheckpoint) {
+  fs::copy(work() / "good", work() / "short", fs::copy_options::recursive);
+  const std::string history = read_text(work() / "short" / "history.csv");
+  std::ofstream(work() / "short" / "history.csv", std::ios::binary | std::ios::trunc)
+      << history.substr(0, history.size() / 2);
+  const auto cut = geompm({"run", "-q", "-t", "1", "-o", "short", "--resume", "model.yaml"});
+  ASSERT_TRUE(cut.exited && cut.exit_code == 2) << describe(cut);
+  EXPECT_TRUE(Contains(cut.err, "error: short/history.csv: " + std::to_string(history.size() / 2) +
+                                    " bytes, but at the "
+                                    "checkpoint it had " +
+                                    std::to_string(history.size()) + " bytes"));
+
+  fs::copy(work() / "good", work() / "lost", fs::copy_options::recursive);
+  fs::remove(work() / "lost" / "newton.csv");
+  const auto lost = geompm({"run", "-q", "-t", "1", "-o", "lost", "--resume", "model.yaml"});
+  ASSERT_TRUE(lost.exited && lost.exit_code == 2) << describe(lost);
+  EXPECT_TRUE(Contains(lost.err, "error: lost/newton.csv: missing;"));
+  EXPECT_EQ(read_text(work() / "lost" / "history.csv"), history) << "history.csv was cut back";
 }
 
 TEST_F(BadCheckpoints, BadCheckpointIntervalOnTheCommandLine) {

@@ -29,7 +29,8 @@ const std::vector<std::string> newton_columns = {"step",
 
 }  // namespace
 
-OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved) {
+OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved,
+                                                     const std::filesystem::path& dir) {
   Positions at;
   saved.get(at.history);
   saved.get(at.newton);
@@ -37,6 +38,9 @@ OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved) {
   saved.get(at.grid);
   saved.get(at.last_values);
   saved.expect_end();
+  // Both files are checked before either is cut back, so a refused resume changes nothing.
+  HistoryWriter::check_resumable(dir / "history.csv", at.history);
+  HistoryWriter::check_resumable(dir / "newton.csv", at.newton);
   return at;
 }
 
@@ -44,7 +48,7 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir)
     : OutputWriter(model, dir, std::optional<Positions>()) {}
 
 OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir, ByteReader& saved)
-    : OutputWriter(model, dir, std::optional<Positions>(read_positions(saved))) {}
+    : OutputWriter(model, dir, std::optional<Positions>(read_positions(saved, dir))) {}
 
 // One constructor for both: a resumed run opens the same files in the same order, each cut back
 // to its length at the checkpoint.

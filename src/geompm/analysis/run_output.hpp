@@ -53,7 +53,7 @@ class OutputWriter {
     std::vector<std::pair<double, std::string>> points, grid;  // the series' entries
     std::vector<double> last_values;
   };
-  static Positions read_positions(ByteReader& saved);
+  static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir);
   OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
   void append_history(const std::vector<double>& values);
   void write_points(double time, int step_number);

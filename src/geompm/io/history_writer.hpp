@@ -19,6 +19,8 @@ class HistoryWriter {
   /// checkpoint, header included). Throws InputError if the file is missing or shorter.
   HistoryWriter(const std::filesystem::path& file, const std::vector<std::string>& columns,
                 std::uintmax_t size);
+  /// Throws the InputError the resuming constructor would: `file` missing or under `size` bytes.
+  static void check_resumable(const std::filesystem::path& file, std::uintmax_t size);
   /// Appends one row (as many values as columns; full precision) and flushes.
   void append(const std::vector<double>& values);
   const std::filesystem::path& path() const { return file_; }
