@@ -69,17 +69,19 @@ void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t mode
   header.put(checkpoint_format_version);
   header.put(static_cast<std::uint64_t>(body.size()));
   header.put(fnv1a_64(body));
-  const std::string bytes = header.bytes() + body;
 
   const std::filesystem::path temporary = checkpoint_temporary(file);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail_write(temporary, "cannot create the file");
   if (options.kill_half_way) {
-    write_all(fd, bytes.data(), bytes.size() / 2);
+    write_all(fd, header.bytes().data(), header.bytes().size());
+    write_all(fd, body.data(), body.size() / 2);
     ::fsync(fd);
     std::raise(SIGKILL);
   }
-  if (!write_all(fd, bytes.data(), bytes.size())) {
+  // Header and body apart: a large model's state is not copied once more to join them.
+  if (!write_all(fd, header.bytes().data(), header.bytes().size()) ||
+      !write_all(fd, body.data(), body.size())) {
     ::close(fd);
     fail_write(temporary, "write failed");
   }
