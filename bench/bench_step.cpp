@@ -80,7 +80,7 @@ void map(benchmark::State& state, int cells) {
   for (auto _ : state) c.map();
   count_points(state, c, all_cores());
   state.counters["active_nodes"] = double(c.grid().active_nodes().size());
-  state.counters["active_cells"] = double(c.grid().cell_fill().size());
+  state.counters["active_cells"] = double(c.grid().grid().cell_fill().size());
 }
 
 void constraints(benchmark::State& state, int cells) {
@@ -89,8 +89,8 @@ void constraints(benchmark::State& state, int cells) {
   c.constrain();
   for (auto _ : state) c.constrain();
   count_points(state, c, all_cores());
-  state.counters["free_dofs"] = double(c.grid().num_free());
-  state.counters["nnz"] = double(c.grid().pattern().nonZeros());
+  state.counters["free_dofs"] = double(c.grid().system().dofs().num_free());
+  state.counters["nnz"] = double(c.grid().system().tangent().nonZeros());
 }
 
 void internal_force(benchmark::State& state, int cells, int n_threads, Formulation formulation) {

@@ -94,8 +94,8 @@ StepCase::StepCase(int cells, Formulation formulation) : cells_(cells), formulat
 void StepCase::map() {
   if (!grid_) {
     heap_before_grid_ = heap_in_use();
-    grid_ = std::make_unique<GridSystem>(model_->mesh, model_->topology,
-                                         model_->material_pointers(), grid_settings(*model_));
+    grid_ = std::make_unique<testing::GridHarness>(
+        model_->mesh, model_->topology, model_->material_pointers(), grid_settings(*model_));
   }
   grid_->initialise(model_->points);
   f_ext_ = grid_->external_force(model_->points, phase_->gravity(1.0), {});
@@ -105,14 +105,16 @@ void StepCase::map() {
 void StepCase::constrain() {
   if (!mapped_) map();
   const int dim = grid_->dim();
-  const auto& node_to_active = grid_->node_to_active();
+  const auto& node_to_active = grid_->grid().node_to_active();
+  const DofMap& dofs = grid_->system().dofs();
+  const int u = dofs.find("displacement");
   constrained_dofs_.assign(grid_->num_dofs(), 0);
   for (const auto& fixity : phase_->fixities)
     for (Index node : fixity.nodes) {
       const Index n = node_to_active[node];
       if (n < 0) continue;
       for (int i = 0; i < dim; ++i)
-        if (fixity.components[i]) constrained_dofs_[n * dim + i] = 1;
+        if (fixity.components[i]) constrained_dofs_[dofs.dof(u, n, i)] = 1;
     }
   grid_->set_constraints(constrained_dofs_);
   constrained_ = true;
@@ -121,12 +123,13 @@ void StepCase::constrain() {
 void StepCase::evaluate() {
   if (!constrained_) constrain();
   if (du_.size() != grid_->num_dofs()) {
-    const int dim = grid_->dim();
+    const DofMap& dofs = grid_->system().dofs();
+    const int u = dofs.find("displacement");
     du_ = Vector::Zero(grid_->num_dofs());
     for (std::size_t n = 0; n < grid_->active_nodes().size(); ++n)
-      du_(Index(n) * dim + 1) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
+      du_(dofs.dof(u, Index(n), 1)) = -1e-4 * model_->mesh.nodes[grid_->active_nodes()[n]].y();
   }
-  grid_->internal_force(model_->points, du_, f_int_, &grid_->tangent_storage());
+  grid_->internal_force(model_->points, du_, f_int_, nullptr, true);
   if (memory_.grid == 0) memory_.grid = double(heap_in_use() - heap_before_grid_);
   evaluated_ = true;
 }
@@ -134,7 +137,7 @@ void StepCase::evaluate() {
 void StepCase::analyse() {
   if (!evaluated_) evaluate();
   if (!solver_) solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
-  solver_->analyze(grid_->tangent_storage());
+  solver_->analyze(grid_->system().tangent());
   analysed_ = true;
 }
 
@@ -142,13 +145,9 @@ void StepCase::factorize_and_solve() {
   if (!analysed_) analyse();
   const std::size_t before = heap_in_use();
   // The Newton right-hand side: the out-of-balance force at the free unknowns.
-  if (residual_.size() != grid_->num_free()) {
-    const Vector r = f_ext_ - f_int_;
-    residual_ = Vector::Zero(grid_->num_free());
-    for (Index d = 0; d < grid_->num_dofs(); ++d)
-      if (grid_->free_index()[d] >= 0) residual_(grid_->free_index()[d]) = r(d);
-  }
-  solver_->factorize(grid_->tangent_storage());
+  const DofMap& dofs = grid_->system().dofs();
+  if (residual_.size() != dofs.num_free()) dofs.restrict_to_free(f_ext_ - f_int_, residual_);
+  solver_->factorize(grid_->system().tangent());
   const Vector dx = solver_->solve(residual_);
   if (memory_.solver == 0) memory_.solver = double(heap_in_use() - before);
   factorised_ = true;
@@ -166,9 +165,10 @@ void StepCase::convect_and_relocate() {
   // As StepSolver::convect_and_relocate: find every destination before committing anything.
   std::vector<Location> found(n);
   std::vector<char> lost(n, 0);
+  const Vector nodal_du = displacement_block(grid_->system().dofs(), du_);
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
-    const Vec3 destination = points.position[p] + grid_->interpolate(points, p, du_);
+    const Vec3 destination = points.position[p] + grid_->grid().interpolate(points, p, nodal_du);
     if (auto where = model_->locator->locate(destination, points.cell[p]))
       found[p] = *where;
     else

@@ -18,6 +18,7 @@
 #include "geompm/analysis/step.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "geompm/solver/linear_solver.hpp"
+#include "grid_harness.hpp"
 
 namespace geompm::bench {
 
@@ -101,8 +102,10 @@ class StepCase {
   /// Resident bytes before the model was built (the process's baseline for this case).
   std::size_t baseline_resident() const { return baseline_resident_; }
 
-  GridSystem& grid() { return *grid_; }
-  const SparseMatrix& tangent() const { return grid_->pattern(); }  // the assembled tangent
+  testing::GridHarness& grid() { return *grid_; }
+  const SparseMatrix& tangent() const {
+    return grid_->system().tangent();
+  }  // the assembled tangent
 
  private:
   int cells_;
@@ -113,7 +116,7 @@ class StepCase {
   StageMemory memory_;
 
   // Stage by stage.
-  std::unique_ptr<GridSystem> grid_;
+  std::unique_ptr<testing::GridHarness> grid_;
   std::unique_ptr<LinearSolver> solver_;
   bool mapped_ = false, constrained_ = false, evaluated_ = false, analysed_ = false,
        factorised_ = false;

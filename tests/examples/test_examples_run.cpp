@@ -3,12 +3,19 @@
 //
 // The examples are found by globbing examples/*/*.yaml when the test program starts (test
 // discovery runs it before each ctest run), so a new example is covered without editing this file.
+//
+// Each example's history.csv must also equal its reference in tests/reference_histories/ (every
+// column within 1e-10 of the column's largest magnitude): the engine's reshaping, and any change
+// that is not meant to change results, must leave every example's curve as it was. A change that
+// is meant to change results regenerates the references with GEOMPM_WRITE_REFERENCES=1 set while
+// this test runs, and says why in its commit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <string>
@@ -96,6 +103,39 @@ void expect_series(const fs::path& pvd, double final_time, bool starts_with_init
 
 fs::path source_dir() { return fs::path(GEOMPM_SOURCE_DIR); }
 
+/// tests/reference_histories/<directory>__<model>.csv for examples/<directory>/<model>.yaml.
+fs::path reference_history(const std::string& example) {
+  std::string name = example.substr(0, example.size() - std::string(".yaml").size());
+  const std::size_t slash = name.find('/');
+  if (slash != std::string::npos) name.replace(slash, 1, "__");
+  return source_dir() / "tests" / "reference_histories" / (name + ".csv");
+}
+
+/// Every column of `run` within `tolerance` of `reference`, relative to the column's largest
+/// magnitude in the reference (so that a quantity passing through zero is measured against its
+/// own scale, not against round-off).
+void expect_same_history(const Csv& run, const Csv& reference, double tolerance) {
+  ASSERT_TRUE(reference.problem.empty()) << reference.problem;
+  ASSERT_EQ(run.header, reference.header);
+  ASSERT_EQ(run.rows.size(), reference.rows.size()) << "a different number of steps";
+  for (std::size_t c = 0; c < reference.header.size(); ++c) {
+    double scale = 0.0, largest = 0.0;
+    std::size_t at = 0;
+    for (const auto& row : reference.rows) scale = std::max(scale, std::abs(row[c]));
+    for (std::size_t k = 0; k < reference.rows.size(); ++k) {
+      const double difference = std::abs(run.rows[k][c] - reference.rows[k][c]);
+      if (difference > largest) {
+        largest = difference;
+        at = k;
+      }
+    }
+    EXPECT_LE(largest, tolerance * std::max(scale, 1e-300))
+        << "column " << reference.header[c] << ", row " << at << ": " << run.rows[at][c]
+        << " against the reference's " << reference.rows[at][c] << " (column scale " << scale
+        << ")";
+  }
+}
+
 /// examples/*/*.yaml, relative to examples/, sorted.
 std::vector<std::string> find_examples() {
   std::vector<std::string> found;
@@ -166,6 +206,17 @@ TEST_P(Example, ChecksAndRuns) {
   EXPECT_EQ(history.rows.front()[0], 0.0);
   EXPECT_NEAR(history.rows.back()[0], duration, 1e-9 * std::max(1.0, duration))
       << "the history should end at the end of the last phase";
+
+  // The same curve as before.
+  const fs::path reference = reference_history(GetParam());
+  if (std::getenv("GEOMPM_WRITE_REFERENCES")) {
+    fs::create_directories(reference.parent_path());
+    fs::copy_file(out / "history.csv", reference, fs::copy_options::overwrite_existing);
+  } else {
+    ASSERT_TRUE(fs::is_regular_file(reference))
+        << reference << " is missing: run this test with GEOMPM_WRITE_REFERENCES=1 to write it";
+    expect_same_history(history, read_csv(reference), 1e-10);
+  }
 
   // ParaView series.
   if (spec.output.vtk_every > 0) {

@@ -76,15 +76,16 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
                                             double phase_time, double time, int step_number,
                                             double dt) const {
   std::vector<double> v = {time, double(step_number)};
-  const int dim = grid.dim();
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
     double value = 0.0;
     if (h.quantity == "reaction") {
       // Sum of the reactions at the constrained unknowns of the boundary or driven set.
+      const DofMap& dofs = *step.dofs;
+      const int u = dofs.find("displacement");
       auto add = [&](Index active_node) {
-        const Index d = active_node * dim + h.component;
-        if (step.constrained[d]) value += step.reaction(d);
+        const Index d = dofs.dof(u, active_node, h.component);
+        if (dofs.constrained(d)) value += step.reaction(d);
       };
       if (!h.footing.empty()) {
         // The force the footing exerts on the soil (docs/theory.md eq. 13.10).

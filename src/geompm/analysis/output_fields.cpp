@@ -41,21 +41,23 @@ void grid_fields(const Model& model, const GridSystem& grid, const StepResult& s
   std::vector<Vec3> velocity(n_nodes, Vec3::Zero()), displacement(n_nodes, Vec3::Zero());
   std::vector<double> mass(n_nodes, 0.0);
   const auto& active = grid.active_nodes();
+  const DofMap& dofs = *step.dofs;
+  const int u = dofs.find("displacement");
   for (Index a = 0; a < static_cast<Index>(active.size()); ++a) {
     for (int i = 0; i < dim; ++i) {
-      velocity[active[a]](i) = step.velocity(a * dim + i);
-      displacement[active[a]](i) = step.displacement(a * dim + i);
+      velocity[active[a]](i) = step.velocity(dofs.dof(u, a, i));
+      displacement[active[a]](i) = step.displacement(dofs.dof(u, a, i));
     }
-    mass[active[a]] = grid.mass()(a * dim);
+    mass[active[a]] = grid.nodal_mass()(a);
   }
   node_fields.vectors.emplace_back("velocity", std::move(velocity));
   node_fields.vectors.emplace_back("step_displacement", std::move(displacement));
   node_fields.scalars.emplace_back("mass", std::move(mass));
-  if (grid.mixed()) {
+  if (step.nodal_pressure.size() > 0) {
     // The pressure unknowns of the mixed formulation (compression positive; theory eq. 11.6).
     std::vector<double> pressure(n_nodes, 0.0);
-    const Vector p = grid.nodal_pressure(step.displacement);
-    for (Index a = 0; a < static_cast<Index>(active.size()); ++a) pressure[active[a]] = p(a);
+    for (Index a = 0; a < static_cast<Index>(active.size()); ++a)
+      pressure[active[a]] = step.nodal_pressure(a);
     node_fields.scalars.emplace_back("pressure", std::move(pressure));
   }
 

@@ -30,7 +30,7 @@ void Simulation::save(const std::filesystem::path& file) const {
   section("phase", [&](ByteWriter& out) { phase_->save(out); });
   section("step_solver", [&](ByteWriter& out) {
     out.put(stepper_.last_rate());
-    out.put(stepper_.grid().last_pressure());
+    out.put(stepper_.pressure().last());
   });
   section("summary", [&](ByteWriter& out) {
     // The wall times so far, this process's included.
@@ -83,8 +83,8 @@ void Simulation::load(const std::filesystem::path& file) {
   control_->restore(control);
 
   ByteReader step_solver = contents.section("step_solver");
-  stepper_.restore_last_rate(step_solver.get<std::vector<double>>());
-  stepper_.grid().restore_last_pressure(step_solver.get<std::vector<double>>());
+  stepper_.set_last_rate(step_solver.get<std::vector<double>>());
+  stepper_.pressure().set_last(step_solver.get<std::vector<double>>());
   step_solver.expect_end();
 
   ByteReader summary = contents.section("summary");

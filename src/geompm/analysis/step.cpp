@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <string>
-#include <unordered_map>
 
-#include "geompm/boundary/contact_hold.hpp"
-#include "geompm/physics/gimp_weights.hpp"
+#include "geompm/analysis/step_contributions.hpp"
+#include "geompm/boundary/footing_contact.hpp"
+#include "geompm/physics/inertia.hpp"
+#include "geompm/physics/point_integrator.hpp"
 #include "geompm/solver/newmark.hpp"
 
 namespace geompm {
@@ -50,78 +50,55 @@ GridSettings grid_settings(const Model& model) {
 
 namespace {
 
-// The Lagrangian phase as a nonlinear problem in the free displacement increments: residual
-// R = f_ext - f_int - M a (seed eq. 6) with a from Newmark (eq. 8) in dynamics.
+// The Lagrangian phase as a nonlinear problem in the free unknowns: residual R = f_ext - f_int -
+// M a (seed eq. 6), every term a contribution of the step's system.
 class LagrangianProblem final : public NonlinearProblem {
  public:
-  LagrangianProblem(GridSystem& grid, const MaterialPoints& points, const Vector& f_ext, Vector& du,
-                    bool dynamic, const Newmark& newmark)
-      : grid_(grid), points_(points), f_ext_(f_ext), du_(du), dynamic_(dynamic), newmark_(newmark) {
-    // Positions of the diagonal entries, to add the inertia term M / (beta dt^2).
-    const SparseMatrix& pattern = grid.pattern();
-    diagonal_.resize(pattern.cols());
-    const auto& free = grid.free_index();
-    grid_dof_.assign(pattern.cols(), -1);
-    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-      if (free[d] >= 0) grid_dof_[free[d]] = d;
-    for (Index j = 0; j < pattern.cols(); ++j)
-      for (int at = pattern.outerIndexPtr()[j]; at < pattern.outerIndexPtr()[j + 1]; ++at)
-        if (pattern.innerIndexPtr()[at] == j) diagonal_[j] = at;
-  }
+  LagrangianProblem(StepSystem& system, Vector& du, const Inertia* inertia)
+      : system_(system),
+        dofs_(system.dofs()),
+        du_(du),
+        inertia_(inertia),
+        points_(*system.find<PointIntegrator>()) {}
 
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
                 SparseMatrix* tangent) override {
-    scatter(x);
+    for (Index k = 0; k < dofs_.num_free(); ++k) du_(dofs_.dof_of_free(k)) = x(k);
     largest_dof_ = -1;
-    if (!grid_.internal_force(points_, du_, f_int_, tangent)) return false;
-    inertia_ = Vector::Zero(du_.size());
-    if (dynamic_)
-      inertia_ = grid_.mass().cwiseProduct(
-          newmark_.acceleration(du_, grid_.velocity(), grid_.acceleration()));
-    const Vector r = f_ext_ - f_int_ - inertia_;
+    if (!system_.evaluate(du_, forces_, tangent != nullptr)) return false;
+    const Vector r = forces_.external - forces_.internal - forces_.inertia;
     residual.resize(x.size());
-    const auto& free = grid_.free_index();
-    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-      if (free[d] >= 0) {
-        residual(free[d]) = r(d);
-        if (largest_dof_ < 0 || std::abs(r(d)) > std::abs(r(largest_dof_))) largest_dof_ = d;
-      }
+    for (Index k = 0; k < dofs_.num_free(); ++k) {
+      const Index d = dofs_.dof_of_free(k);
+      residual(k) = r(d);
+      if (largest_dof_ < 0 || std::abs(r(d)) > std::abs(r(largest_dof_))) largest_dof_ = d;
+    }
     largest_value_ = largest_dof_ >= 0 ? r(largest_dof_) : 0.0;
     // The forces in play; in dynamics also the momentum rate M v / dt, so that a body moving
     // freely without loads is measured against its own motion, not against round-off.
-    force_scale = std::max({f_ext_.norm(), f_int_.norm(), inertia_.norm()});
-    if (dynamic_)
-      force_scale =
-          std::max(force_scale, grid_.mass().cwiseProduct(grid_.velocity()).norm() / newmark_.dt);
-    if (tangent && dynamic_) {
-      double* values = tangent->valuePtr();
-      for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-        if (free[d] >= 0) values[diagonal_[free[d]]] += newmark_.mass_factor() * grid_.mass()(d);
-    }
+    force_scale =
+        std::max({forces_.external.norm(), forces_.internal.norm(), forces_.inertia.norm()});
+    if (inertia_) force_scale = std::max(force_scale, inertia_->momentum_rate());
     return true;
   }
 
   double increment_norm(const Vector& x) const override {
-    // Free unknowns from x, constrained ones (fixed: zero) from du_.
+    // Free unknowns from x, constrained ones (prescribed) from du_.
     double sum = x.squaredNorm();
-    const auto& free = grid_.free_index();
-    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-      if (free[d] < 0) sum += du_(d) * du_(d);
+    for (Index d = 0; d < dofs_.size(); ++d)
+      if (dofs_.constrained(d)) sum += du_(d) * du_(d);
     return std::sqrt(sum);
   }
 
-  /// Holds the branches of switches outside the material (contact) that the accepted iterate
-  /// took, through `hold` (StepSolver::hold_footing_contacts).
-  void iterate_accepted() override {
-    if (hold) hold();
-  }
-  std::function<void()> hold;
+  /// Contributions with a switch outside the material (contact) hold the branch the accepted
+  /// iterate took.
+  void iterate_accepted() override { system_.iterate_accepted(); }
 
   /// The points whose update returned them plastically at the last evaluation, and how many
   /// changed between elastic and plastic since the last call (newton.csv). A switching point
   /// changes the branch of the return, and with it the tangent, between iterates.
   ActiveSet active_set() override {
-    const std::vector<char>& plastic = grid_.plastic_points();
+    const std::vector<char>& plastic = points_.plastic_points();
     ActiveSet set{0, last_plastic_.size() == plastic.size() ? 0 : -1};
     for (std::size_t p = 0; p < plastic.size(); ++p) {
       set.size += plastic[p];
@@ -131,55 +108,47 @@ class LagrangianProblem final : public NonlinearProblem {
     return set;
   }
 
-  const Vector& internal_force() const { return f_int_; }
-  /// The grid unknown with the largest out-of-balance force at the last admissible evaluation
-  /// (-1 if the last evaluation turned a point inside out), and that force.
+  const SystemForces& forces() const { return forces_; }
+  /// The unknown with the largest out-of-balance force at the last admissible evaluation (-1 if
+  /// the last evaluation was inadmissible), and that force.
   Index largest_residual_unknown() const override { return largest_dof_; }
-  Index problem_unknown(Index free) const override { return grid_dof_[free]; }
+  Index problem_unknown(Index free) const override { return dofs_.dof_of_free(free); }
   double largest_residual_value() const { return largest_value_; }
   std::string inadmissible_reason() const override {
-    return grid_.inadmissible_by_stress_update()
+    return points_.inadmissible_by_stress_update()
                ? "inadmissible stress (a point's stress update did not converge)"
                : NonlinearProblem::inadmissible_reason();
   }
-  const Vector& inertia() const { return inertia_; }
 
  private:
-  void scatter(const Vector& x) {
-    const auto& free = grid_.free_index();
-    for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-      if (free[d] >= 0) du_(d) = x(free[d]);
-  }
-
-  GridSystem& grid_;
-  const MaterialPoints& points_;
-  const Vector& f_ext_;
+  StepSystem& system_;
+  const DofMap& dofs_;
   Vector& du_;
-  bool dynamic_;
-  Newmark newmark_;
-  std::vector<int> diagonal_;
-  std::vector<Index> grid_dof_;  // free unknown -> grid dof (inverse of grid.free_index())
-  Vector f_int_, inertia_;
+  const Inertia* inertia_;
+  const PointIntegrator& points_;
+  SystemForces forces_;
   Index largest_dof_ = -1;
   double largest_value_ = 0.0;
   std::vector<char> last_plastic_;
 };
 
-// A grid unknown as the mesh node it belongs to and what it is: displacement component 0..2
-// (x, y, z) or 3, the pressure (displacements first, then the pressures: theory eq. 11.6).
-UnknownAt unknown_at(const GridSystem& grid, Index dof) {
-  const int dim = grid.dim();
-  const Index displacements = static_cast<Index>(grid.active_nodes().size()) * dim;
-  if (dof >= displacements) return {grid.active_nodes()[dof - displacements], UnknownAt::kPressure};
-  return {grid.active_nodes()[dof / dim], static_cast<int>(dof % dim)};
+// A step's unknown as the mesh node it belongs to and what it is: displacement component 0..2
+// (x, y, z) or 3, the pressure.
+UnknownAt unknown_at(const DofMap& dofs, Index dof) {
+  const Unknown u = dofs.unknown(dof);
+  const Field& field = dofs.field(u.field);
+  if (!field.nodal) return {};
+  return {dofs.active_nodes()[u.entity],
+          field.kind == FieldKind::Pressure ? UnknownAt::kPressure : u.component};
 }
 
 // Where a step that did not converge is out of balance most: the unknown, its node and the
 // force, so that a user can see which part of the model holds Newton back.
-std::string out_of_balance(const GridSystem& grid, const Mesh& mesh, Index dof, double value) {
-  const UnknownAt u = unknown_at(grid, dof);
+std::string out_of_balance(const DofMap& dofs, const Mesh& mesh, Index dof, double value) {
+  const UnknownAt u = unknown_at(dofs, dof);
+  if (u.node < 0) return fmt::format("largest residual at unknown {}", dof);
   const Vec3& x = mesh.nodes[u.node];
-  const std::string at = grid.dim() == 3
+  const std::string at = mesh.dim() == 3
                              ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
                              : fmt::format("({:.4g}, {:.4g})", x.x(), x.y());
   if (u.unknown == UnknownAt::kPressure)
@@ -195,174 +164,15 @@ StepSolver::StepSolver(Model& model, LinearSolver& solver)
       solver_(solver),
       grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {}
 
-void StepSolver::prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
-                                         std::vector<Vec3>& prescribed) {
-  prescribed.clear();
-  if (phase.motions.empty()) return;
-  const MaterialPoints& points = model_.points;
-  const Index n = points.size();
-  std::vector<double> stiffness(n, 0.0);
-  std::vector<Vec3> target(n, Vec3::Zero());
-  std::vector<unsigned char> mask(n, 0);
-  for (const auto& motion : phase.motions) {
-    // Target: the prescribed displacement since the phase start at t1, so that the error of a
-    // step is corrected in the next one rather than accumulated.
-    const Vec3 increment = phase.motion_increment(motion, t0, t1);
-    prescribed.push_back(motion.done + increment);
-    for (Index p = 0; p < n; ++p) {
-      if (!(points.sets[p] >> motion.set & 1u)) continue;
-      const double h = grid_.cell_size(p);
-      // Stiffness far above the point's own: k = alpha E V / h^2 with alpha = 1e4, so the
-      // motion is met to about 1e-4 of the deformation without a user parameter.
-      stiffness[p] = 1e4 * model_.materials[points.material[p]]->reference_modulus() *
-                     points.volume[p] / (h * h);
-      for (int i = 0; i < grid_.dim(); ++i)
-        if (!std::isnan(increment(i))) {
-          mask[p] |= static_cast<unsigned char>(1u << i);
-          target[p](i) = prescribed.back()(i) - points.phase_displacement[p](i);
-        }
-    }
-  }
-  grid_.set_point_targets(std::move(stiffness), std::move(target), std::move(mask));
-}
-
-// The rigid footings of a step (docs/theory.md §13): each footing's displacement and pose at the
-// end of the step, the points that may touch it with what the contact law needs of them, and,
-// after convergence, the points touching it with the anchors they used.
-struct StepSolver::FootingStep {
-  std::vector<Vec3> displacement;
-  std::vector<FootingPose> pose;
-  std::vector<std::vector<std::pair<Index, FootingContactPoint>>> points;
-  std::vector<std::vector<int>> slot;  // per footing and point: its entry in `points`, or -1
-  std::vector<std::unordered_map<Index, Vec3>> touching;  // point id -> anchor, per footing
-  /// Per footing and candidate: pressed against the base at the contact law's last evaluation.
-  std::vector<std::vector<char>> pressed;
-  std::vector<ContactHold> hold;  // per footing: the candidates held in contact (eqs. 13.8-9)
-  std::vector<Vec3> offset;       // per point: from the point to the top of its domain
+// What a step carries from its set-up to its end.
+struct StepSolver::Step {
+  double t0 = 0.0, t1 = 0.0;
+  bool dynamic = false;
+  Newmark newmark;
+  Vector du;                          // every unknown: the prescribed ones set before Newton
+  std::vector<Vec3> prescribed;       // per point motion: its displacement at t1
+  std::vector<Vec3> grid_increments;  // per grid motion: its increment over the step
 };
-
-void StepSolver::prepare_footings(const PhaseContext& phase, double t0, double t1,
-                                  FootingStep& step) {
-  if (phase.footings.empty()) return;
-  const MaterialPoints& points = model_.points;
-  const Index n = points.size();
-  const int dim = grid_.dim(), v = dim - 1;
-  const bool axisymmetric = model_.kinematics() == Kinematics::Axisymmetric;
-  std::vector<char> acts(n, 0);
-  std::vector<Vec3> offset(n, Vec3::Zero());
-  for (Index p = 0; p < n; ++p) {
-    // The footing touches a point at the top of its domain: the image of the seeded domain's
-    // top under the point's F (eq. 13.1), carried by the step's deformation within the step.
-    offset[p] = points.domain_deformation(p, dim) * points.initial_top_offset[p];
-    for (int i = dim; i < 3; ++i) offset[p](i) = 0.0;
-  }
-  for (const RigidFooting& footing : phase.footings) {
-    const Vec3 d = footing.displacement(t0, t1);
-    const FootingPose pose = footing.pose(d);
-    std::vector<char> in_body(model_.spec.bodies.size(), footing.spec().bodies.empty());
-    for (const std::string& body : footing.spec().bodies)
-      for (std::size_t b = 0; b < in_body.size(); ++b)
-        if (model_.spec.bodies[b].name == body) in_body[b] = 1;
-    std::vector<std::pair<Index, FootingContactPoint>> candidates;
-    std::vector<int> slot(n, -1);
-    for (Index p = 0; p < n; ++p) {
-      if (!in_body[points.body[p]]) continue;
-      // Its horizontal extent: the cpGIMP half-lengths (eq. 9.4) at the start of the step.
-      Vec3 half = particle_half_lengths(points.initial_half_size[p],
-                                        points.domain_deformation(p, dim), dim);
-      half(v) = 0.0;
-      const Vec3 top = points.position[p] + offset[p];
-      // A point may touch the base in this step if its domain, grown by a cell, reaches it.
-      const double reach = grid_.cell_size(p);
-      bool near = top(v) > pose.base - reach;
-      for (int t = 0; t < v; ++t)
-        near = near && top(t) + half(t) > pose.low(t) - reach &&
-               top(t) - half(t) < pose.high(t) + reach;
-      if (!near) continue;
-      FootingContactPoint c;
-      c.position = top;
-      c.half = half;
-      // kappa = factor x E / h by default (eq. 13.7): the point's stiffness over its cell size.
-      c.kappa = footing.spec().penalty.value_or(
-          footing.spec().penalty_factor *
-          model_.materials[points.material[p]]->reference_modulus() / reach);
-      c.rough = footing.rough();
-      // A point pressed against the base at the end of the last step stays in contact in both
-      // directions through this step's iterations (eq. 13.8). A rough one sticks where it was
-      // first touched: where its path met the base in the step of its first contact (eq. 13.4a),
-      // from its position and gap at the start of that step.
-      const auto anchor = footing.anchor(points.id[p]);
-      c.bilateral = anchor.has_value();
-      c.anchored = anchor.has_value();
-      c.anchor = anchor ? *anchor : Vec3(top - footing.done());
-      c.anchor(v) = 0.0;
-      c.start_gap = top(v) - footing.pose(footing.done()).base;
-      slot[p] = static_cast<int>(candidates.size());
-      candidates.emplace_back(p, c);
-      acts[p] = 1;
-    }
-    std::vector<char> held;
-    for (const auto& candidate : candidates) held.push_back(candidate.second.bilateral);
-    step.pressed.emplace_back(candidates.size(), 0);
-    step.hold.emplace_back(std::move(held));
-    step.displacement.push_back(d);
-    step.pose.push_back(pose);
-    step.points.push_back(std::move(candidates));
-    step.slot.push_back(std::move(slot));
-  }
-  step.offset = offset;
-  grid_.set_point_force_law(std::move(acts), std::move(offset),
-                            [&step, dim, axisymmetric](Index p, const Vec3& u, Vec3& f, Mat3& K) {
-                              f.setZero();
-                              K.setZero();
-                              for (std::size_t k = 0; k < step.pose.size(); ++k)
-                                if (const int at = step.slot[k][p]; at >= 0) {
-                                  const FootingContactForce c =
-                                      footing_contact(step.pose[k], step.points[k][at].second, u,
-                                                      dim, axisymmetric);
-                                  // Each point is evaluated by one thread only.
-                                  step.pressed[k][at] = c.on_base && c.penetration > 0.0;
-                                  f += c.force;
-                                  K += c.stiffness;
-                                }
-                            });
-}
-
-void StepSolver::hold_footing_contacts(FootingStep& step, bool restart) {
-  // After an accepted Newton iterate, or before a new solve of the step: the points the contact
-  // law holds in both directions (ContactHold, docs/theory.md §13). At the iterate a newly held
-  // point touches, so the residual Newton has there does not change.
-  for (std::size_t k = 0; k < step.points.size(); ++k) {
-    ContactHold& hold = step.hold[k];
-    if (restart)
-      hold.restart();
-    else
-      hold.accept(step.pressed[k]);
-    for (std::size_t at = 0; at < hold.size(); ++at)
-      step.points[k][at].second.bilateral = hold.held(at);
-  }
-}
-
-void StepSolver::footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result) {
-  // At the converged increment (before the points move): the force each footing exerts on the
-  // soil, and the points touching it, which keep (or take) their anchors.
-  const MaterialPoints& points = model_.points;
-  const int dim = grid_.dim();
-  const bool axisymmetric = model_.kinematics() == Kinematics::Axisymmetric;
-  auto& touching = step.touching;
-  touching.assign(phase.footings.size(), {});
-  for (std::size_t k = 0; k < phase.footings.size(); ++k) {
-    Vec3 force = Vec3::Zero();
-    for (const auto& [p, point] : step.points[k]) {
-      const Vec3 u = grid_.interpolate_at(points, p, step.offset[p], result.displacement);
-      const FootingContactForce c = footing_contact(step.pose[k], point, u, dim, axisymmetric);
-      force -= c.force;
-      if (c.on_base && c.penetration > 0.0) touching[k][points.id[p]] = c.stuck_at;
-    }
-    result.footing_reactions.try_emplace(phase.footings[k].name(), Vec3::Zero()).first->second +=
-        force;
-  }
-}
 
 namespace {
 // `later` with `earlier` in front, `earlier` padded with `pad` to `size` entries.
@@ -410,81 +220,86 @@ std::size_t rate_index(const UnknownAt& at, int dim) {
 
 bool StepSolver::extrapolated_start(double dt, Vector& x) const {
   if (last_rate_.empty()) return false;
-  const auto& free = grid_.free_index();
+  const DofMap& dofs = system_->dofs();
   bool any = false;
-  for (Index d = 0; d < static_cast<Index>(free.size()); ++d)
-    if (free[d] >= 0) {
-      const UnknownAt at = unknown_at(grid_, d);
-      const double rate = last_rate_[rate_index(at, grid_.dim())];
-      x(free[d]) = rate * dt;
-      any = any || rate != 0.0;
-    }
+  for (Index k = 0; k < dofs.num_free(); ++k) {
+    const UnknownAt at = unknown_at(dofs, dofs.dof_of_free(k));
+    const double rate = last_rate_[rate_index(at, grid_.dim())];
+    x(k) = rate * dt;
+    any = any || rate != 0.0;
+  }
   return any;
 }
 
 void StepSolver::remember_increment(const Vector& du, double dt) {
+  const DofMap& dofs = system_->dofs();
   last_rate_.assign(model_.mesh.nodes.size() * (grid_.dim() + 1), 0.0);
   for (Index d = 0; d < du.size(); ++d)
-    last_rate_[rate_index(unknown_at(grid_, d), grid_.dim())] = du(d) / dt;
+    last_rate_[rate_index(unknown_at(dofs, d), grid_.dim())] = du(d) / dt;
 }
 
-StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
-  StepResult result;
-  MaterialPoints& points = model_.points;
-  const int dim = grid_.dim();
-  const double t1 = t0 + dt;
-  const bool dynamic = !phase.spec->dynamics.quasi_static;
-
-  // --- phase 1: initialise --------------------------------------------------------------
-  grid_.initialise(points);
-  const Index n_dofs = grid_.num_dofs();
+void StepSolver::constrain(const PhaseContext& phase, double t0, double t1, Step& step) const {
+  DofMap& dofs = system_->dofs();
+  const int u = dofs.find("displacement");
   const auto& node_to_active = grid_.node_to_active();
-
-  result.gravity = phase.gravity(t1);
-  std::vector<PointSetForce> forces;
-  for (const auto& load : phase.loads) forces.push_back({load.set, phase.load(load, t1)});
-  const Vector f_ext = grid_.external_force(points, result.gravity, forces);
-
-  // Prescribed motions of point sets: penalty springs on the points (docs/theory.md §5).
-  std::vector<Vec3> prescribed;
-  prescribe_point_motions(phase, t0, t1, prescribed);
-  // Rigid footings: penalty contact at the points (docs/theory.md §13).
-  FootingStep footings;
-  prepare_footings(phase, t0, t1, footings);
-
   // Fixities of grid nodes.
-  result.constrained.assign(n_dofs, 0);
-  Vector du = Vector::Zero(n_dofs);
   for (const auto& fixity : phase.fixities)
     for (Index node : fixity.nodes) {
-      const Index n = node_to_active[node];
-      if (n < 0) continue;
-      for (int i = 0; i < dim; ++i)
-        if (fixity.components[i]) result.constrained[n * dim + i] = 1;
+      const Index a = node_to_active[node];
+      if (a < 0) continue;
+      for (int i = 0; i < grid_.dim(); ++i)
+        if (fixity.components[i]) dofs.constrain(dofs.dof(u, a, i));
     }
   // Prescribed motion of grid nodes (docs/theory.md §5.3): constrained unknowns with a non-zero
   // increment, set before Newton. Newton solves for the free unknowns only and never changes
   // these, so every residual it evaluates sees them. On a node also fixed, the motion wins.
-  std::vector<Vec3> grid_increments;
   for (const auto& motion : phase.grid_motions) {
-    grid_increments.push_back(motion.increment(t0, t1));
+    step.grid_increments.push_back(motion.increment(t0, t1));
+    const Vec3& increment = step.grid_increments.back();
     for (Index node : motion.nodes) {
-      const Index n = node_to_active[node];
-      if (n < 0) continue;
-      for (int i = 0; i < dim; ++i)
-        if (!std::isnan(grid_increments.back()(i))) {
-          result.constrained[n * dim + i] = 1;
-          du(n * dim + i) = grid_increments.back()(i);
-        }
+      const Index a = node_to_active[node];
+      if (a < 0) continue;
+      for (int i = 0; i < grid_.dim(); ++i)
+        if (!std::isnan(increment(i))) dofs.constrain(dofs.dof(u, a, i), increment(i));
     }
   }
-  grid_.set_constraints(result.constrained);
+}
 
-  // --- phase 2: Lagrangian (Newton) -------------------------------------------------------
-  Newmark newmark{phase.spec->dynamics.beta, phase.spec->dynamics.gamma, dt};
-  LagrangianProblem problem(grid_, points, f_ext, du, dynamic, newmark);
-  if (!phase.footings.empty())
-    problem.hold = [&footings] { hold_footing_contacts(footings, false); };
+void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
+  step.t0 = t0;
+  step.t1 = t0 + dt;
+  step.dynamic = !phase.spec->dynamics.quasi_static;
+  step.newmark = Newmark{phase.spec->dynamics.beta, phase.spec->dynamics.gamma, dt};
+  grid_.initialise(model_.points);
+  if (grid_.mixed()) pressure_.initialise(grid_, model_.points);
+  system_ = std::make_unique<StepSystem>(grid_);
+  StepContext context{model_,  phase,        grid_,        pressure_, step.t0,
+                      step.t1, step.dynamic, step.newmark, {}};
+  add_step_contributions(*system_, context);
+  step.prescribed = std::move(context.prescribed);
+  constrain(phase, step.t0, step.t1, step);
+  system_->build_pattern();
+  step.du = system_->dofs().prescribed();
+}
+
+StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
+  StepResult result;
+  Step step;
+  // --- phase 1: initialise: the grid, the step's unknowns and contributions
+  set_up(phase, t0, dt, step);
+  result.gravity = phase.gravity(step.t1);
+  result.dofs = &system_->dofs();
+  // --- phase 2: Lagrangian (Newton)
+  if (!solve(phase, dt, step, result)) return result;
+  result.converged = true;
+  // --- phase 3: convect
+  finish(phase, dt, step, result);
+  return result;
+}
+
+bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepResult& result) {
+  const DofMap& dofs = system_->dofs();
+  LagrangianProblem problem(*system_, step.du, system_->find<Inertia>());
   NewtonSettings settings;
   settings.max_iterations = phase.spec->newton.max_iterations;
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
@@ -498,86 +313,93 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   // Newton cycling between the plastic states of a few points), the step is solved again from
   // zero, whose first iterate is elastic, before it is cut back; both attempts are counted.
   // The extrapolated start gets half of the iterations (or `extrapolated_patience`, where the zero
-  // start is the worse bet: theory §4.5), and more only while it converges
-  // superlinearly (each residual a tenth of the one before or less): one that has not reached
-  // Newton's quadratic regime by then is not the quick start it is meant to be, and the zero
-  // start still gets all of them; one that has would throw away an almost converged iterate.
-  Vector x = Vector::Zero(grid_.num_free());
+  // start is the worse bet: theory §4.5), and more only while it converges superlinearly (each
+  // residual a tenth of the one before or less): one that has not reached Newton's quadratic
+  // regime by then is not the quick start it is meant to be, and the zero start still gets all
+  // of them; one that has would throw away an almost converged iterate.
+  Vector x = Vector::Zero(dofs.num_free());
   const bool extrapolated = phase.spec->newton.extrapolate && extrapolated_start(dt, x);
   NewtonSettings first = settings;
   if (extrapolated) {
     const int patience = phase.spec->newton.extrapolated_patience;
     first.patience = patience > 0 ? patience : std::max(1, settings.max_iterations / 2);
   }
-  result.newton = solve_newton(problem, solver_, first, x, grid_.tangent_storage());
+  SparseMatrix& tangent = system_->tangent();
+  result.newton = solve_newton(problem, solver_, first, x, tangent);
   if (extrapolated && !result.newton.converged) {
     x.setZero();
-    hold_footing_contacts(footings, true);
-    NewtonResult from_zero = solve_newton(problem, solver_, settings, x, grid_.tangent_storage());
+    system_->restart();
+    NewtonResult from_zero = solve_newton(problem, solver_, settings, x, tangent);
     result.newton = after_attempt(result.newton, std::move(from_zero));
   }
   for (const Index dof : result.newton.largest)
-    result.largest_residual.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
+    result.largest_residual.push_back(dof >= 0 ? unknown_at(dofs, dof) : UnknownAt{});
   for (const Index dof : result.newton.largest_correction)
-    result.largest_correction.push_back(dof >= 0 ? unknown_at(grid_, dof) : UnknownAt{});
-  if (!result.newton.converged) {
-    if (const Index p = grid_.inadmissible_point();
-        result.newton.inadmissible && p >= 0 && p < points.size()) {
-      const Vec3& x = points.position[p];
-      result.newton.failure +=
-          grid_.dim() == 3
-              ? fmt::format("; material point {} at ({:.4g}, {:.4g}, {:.4g})", points.id[p], x.x(),
-                            x.y(), x.z())
-              : fmt::format("; material point {} at ({:.4g}, {:.4g})", points.id[p], x.x(), x.y());
-    }
-    if (problem.largest_residual_unknown() >= 0)
-      result.newton.failure +=
-          "; " + out_of_balance(grid_, model_.mesh, problem.largest_residual_unknown(),
-                                problem.largest_residual_value());
-    return result;
+    result.largest_correction.push_back(dof >= 0 ? unknown_at(dofs, dof) : UnknownAt{});
+  if (result.newton.converged) {
+    result.reaction =
+        problem.forces().internal + problem.forces().inertia - problem.forces().external;
+    return true;
   }
-  result.converged = true;
+  const PointIntegrator& integrator = *system_->find<PointIntegrator>();
+  const MaterialPoints& points = model_.points;
+  if (const Index p = integrator.inadmissible_point();
+      result.newton.inadmissible && p >= 0 && p < points.size()) {
+    const Vec3& at = points.position[p];
+    result.newton.failure +=
+        grid_.dim() == 3
+            ? fmt::format("; material point {} at ({:.4g}, {:.4g}, {:.4g})", points.id[p], at.x(),
+                          at.y(), at.z())
+            : fmt::format("; material point {} at ({:.4g}, {:.4g})", points.id[p], at.x(), at.y());
+  }
+  if (problem.largest_residual_unknown() >= 0)
+    result.newton.failure +=
+        "; " + out_of_balance(dofs, model_.mesh, problem.largest_residual_unknown(),
+                              problem.largest_residual_value());
+  return false;
+}
 
-  // --- phase 3: convect ---------------------------------------------------------------------
-  result.displacement = du;
-  if (phase.spec->newton.extrapolate) remember_increment(du, dt);
-  if (dynamic) {
-    result.acceleration = newmark.acceleration(du, grid_.velocity(), grid_.acceleration());
-    result.velocity = newmark.velocity(grid_.velocity(), grid_.acceleration(), result.acceleration);
+void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& result) {
+  const DofMap& dofs = system_->dofs();
+  result.displacement = step.du;
+  if (phase.spec->newton.extrapolate) remember_increment(step.du, dt);
+  if (const Inertia* inertia = system_->find<Inertia>()) {
+    result.acceleration = inertia->acceleration(step.du);
+    result.velocity = inertia->velocity(result.acceleration);
   } else {
-    result.acceleration = Vector::Zero(n_dofs);
-    result.velocity = du / dt;
+    result.acceleration = Vector::Zero(dofs.size());
+    result.velocity = step.du / dt;
   }
-  result.reaction = problem.internal_force() + problem.inertia() - f_ext;
+  if (grid_.mixed()) result.nodal_pressure = pressure_.nodal_pressure(dofs, step.du);
+  Reactions reactions;
+  system_->report(step.du, reactions);
+  result.set_reactions = std::move(reactions.point_sets);
+  result.footing_reactions = std::move(reactions.structures);
+  convect_and_relocate(result, dt, step.dynamic);
+  if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
+    commit_motions(phase, step);
+}
+
+void StepSolver::commit_motions(PhaseContext& phase, const Step& step) {
   for (std::size_t m = 0; m < phase.motions.size(); ++m) {
-    Vec3 force = Vec3::Zero();
-    for (Index p = 0; p < points.size(); ++p)
-      if (points.sets[p] >> phase.motions[m].set & 1u) force += grid_.point_reactions()[p];
-    result.set_reactions.try_emplace(phase.motions[m].set, Vec3::Zero()).first->second += force;
+    const Vec3 reached = step.prescribed[m];
+    for (int i = 0; i < 3; ++i)
+      if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
   }
-  if (!phase.footings.empty()) footing_reactions(phase, footings, result);
-  convect_and_relocate(result, dt, dynamic);
-  if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove) {
-    for (std::size_t m = 0; m < phase.motions.size(); ++m) {
-      const Vec3 reached = prescribed[m];
-      for (int i = 0; i < 3; ++i)
-        if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
-    }
+  if (const FootingContact* contact = system_->find<FootingContact>())
     for (std::size_t k = 0; k < phase.footings.size(); ++k) {
-      RigidFooting& footing = phase.footings[k];
+      const RigidFooting& footing = phase.footings[k];
       Vec3& done =
           model_.footing_displacement.try_emplace(footing.name(), Vec3::Zero()).first->second;
-      done += footings.displacement[k] - footing.done();
-      footing.commit(footings.displacement[k], std::move(footings.touching[k]));
+      done += contact->displacement(k) - footing.done();
     }
-    for (std::size_t m = 0; m < phase.grid_motions.size(); ++m) {
-      Vec3& done = model_.grid_displacement.try_emplace(phase.grid_motions[m].name, Vec3::Zero())
-                       .first->second;
-      for (int i = 0; i < 3; ++i)
-        if (!std::isnan(grid_increments[m](i))) done(i) += grid_increments[m](i);
-    }
+  system_->commit();
+  for (std::size_t m = 0; m < phase.grid_motions.size(); ++m) {
+    Vec3& done = model_.grid_displacement.try_emplace(phase.grid_motions[m].name, Vec3::Zero())
+                     .first->second;
+    for (int i = 0; i < 3; ++i)
+      if (!std::isnan(step.grid_increments[m](i))) done(i) += step.grid_increments[m](i);
   }
-  return result;
 }
 
 void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynamic) {
@@ -588,9 +410,10 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
   std::vector<Location> found(n);
   std::vector<Vec3> destination(n);
   std::vector<char> lost(n, 0);
+  const Vector nodal_du = displacement_block(system_->dofs(), result.displacement);
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
-    destination[p] = points.position[p] + grid_.interpolate(points, p, result.displacement);
+    destination[p] = points.position[p] + grid_.interpolate(points, p, nodal_du);
     if (auto where = model_.locator->locate(destination[p], points.cell[p]))
       found[p] = *where;
     else
@@ -601,7 +424,12 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
   if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Stop)
     return;
 
-  grid_.convect(points, result.displacement, result.velocity, result.acceleration, dt, dynamic);
+  const DofMap& dofs = system_->dofs();
+  pressure_.remember(grid_, dofs, result.displacement);
+  system_->find<PointIntegrator>()->commit_state(points, result.displacement);
+  grid_.convect(points, displacement_block(dofs, result.displacement),
+                displacement_block(dofs, result.velocity),
+                displacement_block(dofs, result.acceleration), dt, dynamic);
   for (Index p = 0; p < n; ++p)
     if (!lost[p]) {
       points.cell[p] = found[p].cell;

@@ -1,15 +1,19 @@
-// One step of the implicit MPM (seed paper Fig. 1): initialise the grid from the points, solve
-// the Lagrangian phase by Newton, convect the solution back to the points and relocate them.
-// A step that does not converge leaves the points as they were, so the caller can cut the
-// time step back and retry from the last converged state.
+// One step of the implicit MPM (seed paper Fig. 1): initialise the grid from the points and set
+// up the step's equations (its unknowns and contributions), solve the Lagrangian phase by Newton,
+// convect the solution back to the points and relocate them. A step that does not converge leaves
+// the points as they were, so the caller can cut the time step back and retry from the last
+// converged state.
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geompm/analysis/phase_context.hpp"
 #include "geompm/physics/grid_system.hpp"
+#include "geompm/physics/pressure_field.hpp"
+#include "geompm/physics/step_system.hpp"
 #include "geompm/solver/linear_solver.hpp"
 #include "geompm/solver/newton.hpp"
 
@@ -30,10 +34,12 @@ struct StepResult {
   std::vector<UnknownAt> largest_residual;
   /// Per entry of newton.corrections: the unknown the correction moved most (newton.csv).
   std::vector<UnknownAt> largest_correction;
-  // Grid solution of the converged step (dof-indexed over grid.active_nodes()).
+  /// The step's unknowns (valid until the next step), and the converged solution over them.
+  const DofMap* dofs = nullptr;
   Vector displacement, velocity, acceleration;
-  Vector reaction;                    // f_int + M a - f_ext, non-zero at constrained dofs
-  std::vector<char> constrained;      // per dof
+  Vector reaction;  // f_int + M a - f_ext, non-zero at constrained unknowns
+  /// Nodal pressures per active node of the mixed p-u formulation (empty without it).
+  Vector nodal_pressure;
   std::map<int, Vec3> set_reactions;  // point-set bit -> force its prescribed motion exerts
   std::map<std::string, Vec3> footing_reactions;  // rigid footing -> force it exerts on the soil
   Vec3 gravity = Vec3::Zero();
@@ -54,34 +60,38 @@ class StepSolver {
   StepResult advance(PhaseContext& phase, double t0, double dt);
 
   GridSystem& grid() { return grid_; }
-  const GridSystem& grid() const { return grid_; }
-
-  /// The last step's rate of the extrapolated start, as a checkpoint saves and restores it.
-  const std::vector<double>& last_rate() const { return last_rate_; }
-  void restore_last_rate(std::vector<double> rate) { last_rate_ = std::move(rate); }
+  PressureField& pressure() { return pressure_; }
+  const PressureField& pressure() const { return pressure_; }
 
   /// Forgets the last step's increment, so that the phase's first step does not extrapolate the
   /// previous phase's path (`newton: {predictor: extrapolated}`), and the last nodal pressure
   /// (`mixed_pressure_start: fitted`), so that it starts from its points' pressures.
   void start_phase() {
     last_rate_.clear();
-    grid_.forget_pressure_field();
+    pressure_.forget();
   }
 
+  /// The last converged step's increment per unit time, per mesh node and unknown (for
+  /// checkpoints).
+  const std::vector<double>& last_rate() const { return last_rate_; }
+  void set_last_rate(std::vector<double> rate) { last_rate_ = std::move(rate); }
+
  private:
+  struct Step;
+  void set_up(PhaseContext& phase, double t0, double dt, Step& step);
+  void constrain(const PhaseContext& phase, double t0, double t1, Step& step) const;
+  bool solve(const PhaseContext& phase, double dt, Step& step, StepResult& result);
+  void finish(PhaseContext& phase, double dt, Step& step, StepResult& result);
   bool extrapolated_start(double dt, Vector& x) const;
   void remember_increment(const Vector& du, double dt);
   void convect_and_relocate(StepResult& result, double dt, bool dynamic);
-  void prescribe_point_motions(const PhaseContext& phase, double t0, double t1,
-                               std::vector<Vec3>& prescribed);
-  struct FootingStep;
-  void prepare_footings(const PhaseContext& phase, double t0, double t1, FootingStep& step);
-  static void hold_footing_contacts(FootingStep& step, bool restart);
-  void footing_reactions(PhaseContext& phase, FootingStep& step, StepResult& result);
+  void commit_motions(PhaseContext& phase, const Step& step);
 
   Model& model_;
   LinearSolver& solver_;
   GridSystem grid_;
+  PressureField pressure_;
+  std::unique_ptr<StepSystem> system_;  // the last step's equations
   // The last converged step's increment per unit time, per mesh node and unknown (dim
   // displacements, then the pressure): Newton's first iterate with `predictor: extrapolated`.
   std::vector<double> last_rate_;

@@ -175,4 +175,23 @@ std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
   });
 }
 
+std::vector<NodeBlock> ghost_penalty_blocks(const GridSystem& grid, const MaterialPoints& points) {
+  if (grid.settings().ghost_penalty <= 0.0) return {};
+  const Index n_active = static_cast<Index>(grid.active_cells().size());
+  std::vector<double> modulus(n_active, 0.0);
+  for (Index ci = 0; ci < n_active; ++ci)
+    for (Index p = grid.cell_point_begin(ci); p < grid.cell_point_end(ci); ++p) {
+      // The point's own Young's modulus E = 9 K G / (3 K + G): it varies in space where s_u does.
+      const ElasticModuli m =
+          grid.materials()[points.material[p]]->elastic_moduli(points.internal[p]);
+      const double E =
+          3.0 * m.bulk + m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
+      modulus[ci] = std::max(modulus[ci], E);
+    }
+  return ghost_penalty_faces(
+      grid.mesh(), grid.topology(), grid.active_cells(), grid.node_to_active(),
+      {modulus, grid.cell_fill()},
+      {grid.settings().ghost_penalty, grid.settings().ghost_penalty_fill, grid.axisymmetric()});
+}
+
 }  // namespace geompm

@@ -15,6 +15,7 @@
 #include "geompm/core/types.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
+#include "geompm/physics/grid_system.hpp"
 #include "geompm/physics/node_block.hpp"
 
 namespace geompm {
@@ -49,5 +50,10 @@ std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
                                            const std::vector<Index>& node_to_active,
                                            const GhostPenaltyCells& cells,
                                            const GhostPenaltySettings& settings);
+
+/// The faces of the step's grid that carry the penalty, with each edge cell's modulus the largest
+/// Young's modulus E = 9 K G / (3 K + G) of its points (it varies in space where s_u does); none
+/// when settings.ghost_penalty is 0.
+std::vector<NodeBlock> ghost_penalty_blocks(const GridSystem& grid, const MaterialPoints& points);
 
 }  // namespace geompm

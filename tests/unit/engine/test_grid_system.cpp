@@ -17,7 +17,7 @@
 #include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
 #include "geompm/physics/gimp_weights.hpp"
-#include "geompm/physics/grid_system.hpp"
+#include "grid_harness.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
@@ -83,7 +83,7 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
     settings.mixed_field_pressure = choice->field_pressure;
     settings.mixed_incremental_pressure = choice->incremental_pressure;
   }
-  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   // Prescribed-motion springs on every fifth point (eq. 5.1), through the point's weights.
   const Index n_points = model->points.size();
@@ -330,7 +330,7 @@ TEST(GridSystemInadmissible, NamesTheLowestPointThatTurnedInsideOut) {
   auto model = build_model(spec);
   GridSettings settings;
   settings.kinematics = spec.kinematics;
-  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   const int dim = grid.dim();
@@ -382,7 +382,7 @@ TEST(GridSystemInadmissible, SaysWhenAPointsStressUpdateFailed) {
   }
   GridSettings settings;
   settings.kinematics = spec.kinematics;
-  GridSystem grid(model->mesh, model->topology, materials, settings);
+  testing::GridHarness grid(model->mesh, model->topology, materials, settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   const int dim = grid.dim();
@@ -420,7 +420,7 @@ void check_volume_average(const std::string& example, bool average, bool mixed =
   settings.kinematics = spec.kinematics;
   settings.mixed.assign(spec.materials.size(), mixed);
   settings.volume_average.assign(spec.materials.size(), average);
-  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   std::mt19937 rng(3);
@@ -431,7 +431,8 @@ void check_volume_average(const std::string& example, bool average, bool mixed =
   for (Index d = 0; d < displacements; ++d) du(d) = 2e-3 * u(rng);
   MaterialPoints own = model->points, averaged = model->points;
   settings.volume_average.assign(spec.materials.size(), 0);
-  GridSystem per_point(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness per_point(model->mesh, model->topology, model->material_pointers(),
+                                 settings);
   per_point.initialise(own);
   ASSERT_TRUE(per_point.commit_state(own, du));
   ASSERT_TRUE(grid.commit_state(averaged, du));
@@ -514,7 +515,7 @@ TEST(GridSystemIncrementalPressure, AStepStartsInBalanceWithTheMismatchThePoints
     settings.mixed.assign(spec.materials.size(), 1);
     settings.volume_average.assign(spec.materials.size(), 0);
     settings.mixed_incremental_pressure = incremental;
-    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
     MaterialPoints copy = points;
     grid.initialise(copy);
     grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
@@ -559,7 +560,7 @@ TEST(GridSystemPressureStabilisation, TheFloorResistsAModeThePointsCannotSee) {
     settings.volume_average.assign(spec.materials.size(), 0);
     settings.pressure_stabilisation_floor = floor;
     settings.buffer_layers = 0;  // no empty cells, whose regularisation (11.7) would see the mode
-    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
     MaterialPoints points = model->points;
     grid.initialise(points);
     grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
@@ -613,7 +614,7 @@ TEST(GridSystemSparseNodes, OnlyTheNodesThePointsBarelyReachGetTheSpring) {
     GridSettings settings;
     settings.kinematics = spec.kinematics;
     settings.sparse_node_modulus = sparse;
-    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
     MaterialPoints points = model->points;
     grid.initialise(points);
     grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
@@ -694,7 +695,7 @@ TEST(GridSystemGhostPenalty, AddsALinearForceThatLinearFieldsDoNotFeel) {
     settings.kinematics = spec.kinematics;
     settings.ghost_penalty = gamma;
     settings.ghost_penalty_fill = fill_limit;  // the top row is full: 1 lets it carry the penalty
-    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
     MaterialPoints points = model->points;
     grid.initialise(points);
     grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
@@ -753,7 +754,7 @@ void check_linear_field(GridInterpolation interpolation) {
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.interpolation = interpolation;
-  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
   Vector du(grid.num_dofs());
@@ -792,7 +793,7 @@ TEST(GridSystemGimp, MapsMassAndLoadsThroughTheStencil) {
   GridSettings settings;
   settings.kinematics = spec.kinematics;
   settings.interpolation = GridInterpolation::Gimp;
-  GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+  testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
   grid.initialise(model->points);
   double mass = 0.0;
   for (Index p = 0; p < model->points.size(); ++p) mass += model->points.mass[p];
@@ -833,7 +834,7 @@ TEST(GridSystemGimp, RefusesAMeshThatIsNotARectilinearGrid) {
   GridSettings settings;
   settings.interpolation = GridInterpolation::Gimp;
   try {
-    GridSystem grid(model->mesh, model->topology, model->material_pointers(), settings);
+    testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);
     ADD_FAILURE() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("numerics.interpolation: gimp needs a rectilinear grid"),

@@ -1,0 +1,117 @@
+#include "geompm/analysis/step_contributions.hpp"
+
+#include <cmath>
+
+#include "geompm/boundary/footing_contact.hpp"
+#include "geompm/physics/body_loads.hpp"
+#include "geompm/physics/empty_cell_stiffness.hpp"
+#include "geompm/physics/ghost_penalty.hpp"
+#include "geompm/physics/inertia.hpp"
+#include "geompm/physics/point_integrator.hpp"
+#include "geompm/physics/point_springs.hpp"
+#include "geompm/physics/sparse_node_springs.hpp"
+
+namespace geompm {
+namespace {
+
+void material_points(StepSystem& system, StepContext& c) {
+  system.add(std::make_unique<PointIntegrator>(c.grid, c.model.points, system.dofs(), &c.pressure));
+}
+
+void empty_cells(StepSystem& system, StepContext& c) {
+  auto empty = std::make_unique<EmptyCellStiffness>(c.grid, system.dofs(), &c.pressure);
+  if (!empty->empty()) system.find<PointIntegrator>()->add_cell_term(std::move(empty));
+}
+
+void sparse_node_springs(StepSystem& system, StepContext& c) {
+  auto blocks = sparse_node_springs(c.grid, c.model.points);
+  if (!blocks.empty())
+    system.add(std::make_unique<NodeBlocks>("sparse-node springs", std::move(blocks), system.dofs(),
+                                            c.grid.dim()));
+}
+
+void ghost_penalty(StepSystem& system, StepContext& c) {
+  auto blocks = ghost_penalty_blocks(c.grid, c.model.points);
+  if (!blocks.empty())
+    system.add(std::make_unique<NodeBlocks>("ghost penalty", std::move(blocks), system.dofs(),
+                                            c.grid.dim()));
+}
+
+void point_motions(StepSystem& system, StepContext& c) {
+  // Prescribed motions of point sets: penalty springs on the points (docs/theory.md §5).
+  if (c.phase.motions.empty()) return;
+  const MaterialPoints& points = c.model.points;
+  const Index n = points.size();
+  PointTargets targets;
+  targets.stiffness.assign(n, 0.0);
+  targets.target.assign(n, Vec3::Zero());
+  targets.mask.assign(n, 0);
+  for (const auto& motion : c.phase.motions) {
+    // Target: the prescribed displacement since the phase start at t1, so that the error of a
+    // step is corrected in the next one rather than accumulated.
+    const Vec3 increment = c.phase.motion_increment(motion, c.t0, c.t1);
+    c.prescribed.push_back(motion.done + increment);
+    targets.sets.push_back(motion.set);
+    for (Index p = 0; p < n; ++p) {
+      if (!(points.sets[p] >> motion.set & 1u)) continue;
+      const double h = c.grid.cell_size(p);
+      // Stiffness far above the point's own: k = alpha E V / h^2 with alpha = 1e4, so the
+      // motion is met to about 1e-4 of the deformation without a user parameter.
+      targets.stiffness[p] = 1e4 * c.model.materials[points.material[p]]->reference_modulus() *
+                             points.volume[p] / (h * h);
+      for (int i = 0; i < c.grid.dim(); ++i)
+        if (!std::isnan(increment(i))) {
+          targets.mask[p] |= static_cast<unsigned char>(1u << i);
+          targets.target[p](i) = c.prescribed.back()(i) - points.phase_displacement[p](i);
+        }
+    }
+  }
+  auto& springs =
+      system.add(std::make_unique<PointSprings>(c.grid, points, system.dofs(), std::move(targets)));
+  system.find<PointIntegrator>()->add_point_term(&springs);
+}
+
+void rigid_footings(StepSystem& system, StepContext& c) {
+  // Rigid footings: penalty contact at the points (docs/theory.md §13).
+  if (c.phase.footings.empty()) return;
+  FootingContactInputs inputs;
+  inputs.footings = &c.phase.footings;
+  for (const RigidFooting& footing : c.phase.footings) {
+    std::vector<char> in_body(c.model.spec.bodies.size(), footing.spec().bodies.empty());
+    for (const std::string& body : footing.spec().bodies)
+      for (std::size_t b = 0; b < in_body.size(); ++b)
+        if (c.model.spec.bodies[b].name == body) in_body[b] = 1;
+    inputs.acts_on_body.push_back(std::move(in_body));
+  }
+  for (Index p = 0; p < c.model.points.size(); ++p)
+    inputs.modulus.push_back(c.model.materials[c.model.points.material[p]]->reference_modulus());
+  inputs.t0 = c.t0;
+  inputs.t1 = c.t1;
+  auto& contact = system.add(
+      std::make_unique<FootingContact>(c.grid, c.model.points, system.dofs(), std::move(inputs)));
+  system.find<PointIntegrator>()->add_point_term(&contact);
+}
+
+void body_loads(StepSystem& system, StepContext& c) {
+  std::vector<PointSetForce> forces;
+  for (const auto& load : c.phase.loads) forces.push_back({load.set, c.phase.load(load, c.t1)});
+  system.add(std::make_unique<BodyLoads>(c.grid, c.model.points, system.dofs(),
+                                         c.phase.gravity(c.t1), forces));
+}
+
+void inertia(StepSystem& system, StepContext& c) {
+  if (c.dynamic) system.add(std::make_unique<Inertia>(c.grid, system.dofs(), c.newmark));
+}
+
+// The terms of a step, in the order they are evaluated.
+using Maker = void (*)(StepSystem&, StepContext&);
+constexpr Maker makers[] = {material_points, empty_cells,    sparse_node_springs, ghost_penalty,
+                            point_motions,   rigid_footings, body_loads,          inertia};
+
+}  // namespace
+
+void add_step_contributions(StepSystem& system, StepContext& context) {
+  for (Maker make : makers) make(system, context);
+}
+
+}  // namespace geompm

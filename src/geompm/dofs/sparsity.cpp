@@ -1,0 +1,74 @@
+#include "geompm/dofs/sparsity.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace geompm {
+
+SparsityBuilder::SparsityBuilder(const DofMap& dofs)
+    : dofs_(dofs), node_neighbours_(dofs.active_nodes().size()) {}
+
+void SparsityBuilder::couple_nodes(std::span<const Index> nodes) {
+  for (Index a : nodes)
+    node_neighbours_[a].insert(node_neighbours_[a].end(), nodes.begin(), nodes.end());
+}
+
+void SparsityBuilder::couple_unknowns(std::span<const Index> unknowns) {
+  if (extra_.empty()) extra_.resize(dofs_.size());
+  for (Index d : unknowns) extra_[d].insert(extra_[d].end(), unknowns.begin(), unknowns.end());
+}
+
+SparseMatrix SparsityBuilder::build() {
+  for (auto& list : node_neighbours_) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  std::vector<int> nodal;  // the nodal fields, in the order of their unknowns
+  for (int f = 0; f < dofs_.num_fields(); ++f)
+    if (dofs_.field(f).nodal) nodal.push_back(f);
+  // Columns in the order of their free index; rows ascending: the nodal fields' unknowns are
+  // numbered field by field, node by node, so walking fields, then neighbours, then components
+  // gives them in order; couplings of other fields are merged in.
+  const Index n_free = dofs_.num_free();
+  std::vector<int> outer(n_free + 1, 0);
+  std::vector<int> inner;
+  std::vector<Index> rows;
+  for (Index col = 0; col < n_free; ++col) {
+    const Index d = dofs_.dof_of_free(col);
+    const Unknown u = dofs_.unknown(d);
+    rows.clear();
+    if (dofs_.field(u.field).nodal)
+      for (int f : nodal)
+        for (Index b : node_neighbours_[u.entity])
+          for (int k = 0; k < dofs_.field(f).components; ++k)
+            if (const Index row = dofs_.free_index(dofs_.dof(f, b, k)); row >= 0)
+              rows.push_back(row);
+    if (!extra_.empty() && !extra_[d].empty()) {
+      for (Index e : extra_[d])
+        if (const Index row = dofs_.free_index(e); row >= 0) rows.push_back(row);
+      std::sort(rows.begin(), rows.end());
+      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    }
+    inner.insert(inner.end(), rows.begin(), rows.end());
+    outer[col + 1] = static_cast<int>(inner.size());
+  }
+  SparseMatrix pattern(n_free, n_free);
+  pattern.resizeNonZeros(static_cast<Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern.innerIndexPtr());
+  std::fill(pattern.valuePtr(), pattern.valuePtr() + inner.size(), 0.0);
+  return pattern;
+}
+
+void add_to_tangent(SparseMatrix& tangent, const DofMap& dofs, Index row, Index col, double value) {
+  const Index r = dofs.free_index(row), c = dofs.free_index(col);
+  if (r < 0 || c < 0) return;
+  const int* inner = tangent.innerIndexPtr();
+  const int* end = inner + tangent.outerIndexPtr()[c + 1];
+  const int* at = std::lower_bound(inner + tangent.outerIndexPtr()[c], end, r);
+  if (at == end || *at != r)
+    throw std::logic_error("add_to_tangent: a coupling that is not in the pattern");
+  tangent.valuePtr()[at - inner] += value;
+}
+
+}  // namespace geompm

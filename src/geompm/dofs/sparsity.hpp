@@ -1,0 +1,41 @@
+// The tangent's sparsity pattern for a step, over the free unknowns of a DofMap: every
+// contribution declares the couplings it adds (docs/architecture.md, "Contributions") and the
+// pattern is built once, before Newton, and filled by every iteration. Nodes that share a cell,
+// a point's stencil or a penalty face couple every nodal unknown of one with every nodal unknown
+// of the other; unknowns of other fields (a rigid body, a contact multiplier) couple unknown by
+// unknown.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "geompm/dofs/dof_map.hpp"
+#include "geompm/solver/linear_solver.hpp"
+
+namespace geompm {
+
+class SparsityBuilder {
+ public:
+  explicit SparsityBuilder(const DofMap& dofs);
+
+  /// Every nodal unknown of each of these active nodes couples with every nodal unknown of each.
+  void couple_nodes(std::span<const Index> nodes);
+  /// Each of these unknowns couples with each (any fields).
+  void couple_unknowns(std::span<const Index> unknowns);
+
+  /// The pattern over the free unknowns (columns and, in each, rows in ascending free index),
+  /// with zero values.
+  SparseMatrix build();
+
+ private:
+  const DofMap& dofs_;
+  std::vector<std::vector<Index>> node_neighbours_;  // per active node
+  std::vector<std::vector<Index>> extra_;            // per unknown: coupled unknowns
+};
+
+/// Adds `value` to entry (row, col) of a tangent over the free unknowns, both given as unknowns
+/// of `dofs`; nothing where either is constrained. Throws std::logic_error if the pattern has no
+/// such entry (a contribution that did not declare its coupling).
+void add_to_tangent(SparseMatrix& tangent, const DofMap& dofs, Index row, Index col, double value);
+
+}  // namespace geompm

@@ -1,0 +1,39 @@
+// The inertia of the grid's lumped mass in a dynamic step (seed eqs. 8 and 11): M a with the
+// step's acceleration from Newmark, and M / (beta dt^2) on the tangent's diagonal.
+#pragma once
+
+#include <vector>
+
+#include "geompm/physics/contribution.hpp"
+#include "geompm/physics/grid_system.hpp"
+#include "geompm/solver/newmark.hpp"
+
+namespace geompm {
+
+class Inertia final : public Contribution {
+ public:
+  Inertia(const GridSystem& grid, const DofMap& dofs, const Newmark& newmark);
+  const char* name() const override { return "inertia"; }
+  void attach(const SparseMatrix& pattern) override;
+  bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
+
+  /// |M v0| / dt: the momentum rate of the grid's motion at the start of the step, the force
+  /// scale of a body that moves freely without loads.
+  double momentum_rate() const;
+  /// The acceleration and velocity at the end of the step (per unknown) for the increment du.
+  Vector acceleration(const Vector& du) const;
+  Vector velocity(const Vector& acceleration) const;
+
+ private:
+  const DofMap& dofs_;
+  Newmark newmark_;
+  Vector mass_, velocity_, acceleration_;  // per unknown: the displacement field's, else 0
+  std::vector<int> diagonal_;              // per free unknown: its diagonal entry
+};
+
+/// The step's unknowns of the displacement field (dim per active node) from a nodal vector, and
+/// back: the displacement field's block.
+Vector displacement_block(const DofMap& dofs, const Vector& all);
+Vector from_displacement_block(const DofMap& dofs, const Vector& nodal);
+
+}  // namespace geompm
