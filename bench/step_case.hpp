@@ -70,9 +70,11 @@ class StepCase {
   /// Its displacement increment is a smooth settlement (du_y = -1e-4 y), so the stress update
   /// runs its general path rather than the one of an undeformed point.
   void evaluate();
-  /// Symbolic analysis of the tangent (once per step in Newton).
+  /// UMFPACK's symbolic analysis of the tangent (once per step in Newton); the first call also
+  /// gives the linear solver the step's pattern (LinearSolver::analyse).
   void analyse();
-  /// Numeric factorisation and one solve (once per Newton iteration).
+  /// Numeric factorisation and one solve (once per Newton iteration): LinearSolver::setup and
+  /// solve. The first call after analyse() also does the solver's symbolic analysis.
   void factorize_and_solve();
   /// Phase 3: points moved with du, state committed, points relocated in the mesh (mirrors
   /// StepSolver::convect_and_relocate, which is private).

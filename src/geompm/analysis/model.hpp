@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/point_locator.hpp"
 #include "geompm/points/material_points.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
 

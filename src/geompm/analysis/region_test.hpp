@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
 #include "geompm/mesh/mesh.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
 

@@ -6,11 +6,12 @@
 #include <cmath>
 #include <string>
 
+#include "geompm/analysis/linear_solver_hints.hpp"
 #include "geompm/analysis/step_contributions.hpp"
 #include "geompm/boundary/footing_contact.hpp"
 #include "geompm/physics/inertia.hpp"
+#include "geompm/physics/newmark.hpp"
 #include "geompm/physics/point_integrator.hpp"
-#include "geompm/solver/newmark.hpp"
 
 namespace geompm {
 
@@ -196,6 +197,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   second.iterations += failed.iterations;
   second.halvings += failed.halvings;
   second.searches += failed.searches;
+  second.linear_iterations += failed.linear_iterations;
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);
@@ -324,11 +326,16 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepRes
     const int patience = phase.spec->newton.extrapolated_patience;
     first.patience = patience > 0 ? patience : std::max(1, settings.max_iterations / 2);
   }
+  // The step's pattern and unknowns, for the linear solver; a retry analyses again, as a direct
+  // solver's symbolic analysis takes the values of the first matrix after it (UMFPACK's).
   SparseMatrix& tangent = system_->tangent();
+  const LinearSolverHints hints = linear_solver_hints(dofs, model_.mesh.nodes);
+  solver_.analyse(tangent, hints);
   result.newton = solve_newton(problem, solver_, first, x, tangent);
   if (extrapolated && !result.newton.converged) {
     x.setZero();
     system_->restart();
+    solver_.analyse(tangent, hints);
     NewtonResult from_zero = solve_newton(problem, solver_, settings, x, tangent);
     result.newton = after_attempt(result.newton, std::move(from_zero));
   }

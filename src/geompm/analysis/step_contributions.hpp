@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "geompm/analysis/phase_context.hpp"
+#include "geompm/physics/newmark.hpp"
 #include "geompm/physics/pressure_field.hpp"
 #include "geompm/physics/step_system.hpp"
-#include "geompm/solver/newmark.hpp"
 
 namespace geompm {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "geompm/core/expression.hpp"
-#include "geompm/io/model_spec.hpp"
 #include "geompm/mesh/mesh.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
 

@@ -12,7 +12,7 @@
 #include <unordered_map>
 
 #include "geompm/core/expression.hpp"
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
 

@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "geompm/core/linear_algebra.hpp"
 #include "geompm/dofs/dof_map.hpp"
-#include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
 

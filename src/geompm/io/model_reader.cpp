@@ -11,6 +11,7 @@
 
 #include "geompm/io/model_reader_sections.hpp"
 #include "geompm/materials/material.hpp"
+#include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
 
@@ -241,7 +242,7 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   if (auto start = section.find("mixed_pressure_start"))
     numerics.fitted_pressure_start = start->choice({"points", "fitted"}) == "fitted";
   if (auto solver = section.find("linear_solver"))
-    numerics.linear_solver = solver->choice({"umfpack", "sparse_lu"});
+    numerics.linear_solver = solver->choice(linear_solver_names());
   return numerics;
 }
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "geompm/io/model_spec.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "geompm/io/model_spec.hpp"
 #include "geompm/io/yaml_access.hpp"
 #include "geompm/mesh/cell_type.hpp"
+#include "geompm/spec/model_spec.hpp"
 
 namespace geompm::model_reader {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "geompm/core/tensor.hpp"
-#include "geompm/points/material_points.hpp"
+#include "geompm/materials/internal_variables.hpp"
 
 namespace geompm {
 

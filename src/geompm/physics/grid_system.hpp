@@ -15,12 +15,12 @@
 #include <span>
 #include <vector>
 
+#include "geompm/core/linear_algebra.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/points/material_points.hpp"
-#include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
 

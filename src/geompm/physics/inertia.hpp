@@ -6,7 +6,7 @@
 
 #include "geompm/physics/contribution.hpp"
 #include "geompm/physics/grid_system.hpp"
-#include "geompm/solver/newmark.hpp"
+#include "geompm/physics/newmark.hpp"
 
 namespace geompm {
 

@@ -8,16 +8,12 @@
 #include <vector>
 
 #include "geompm/core/types.hpp"
+#include "geompm/materials/internal_variables.hpp"
 
 namespace geompm {
 
 class ByteWriter;
 class ByteReader;
-
-/// Material-model history variables per point (equivalent plastic strain, ...); the material
-/// says how many of these it uses.
-inline constexpr int max_internal_variables = 4;
-using InternalVariables = std::array<double, max_internal_variables>;
 
 struct MaterialPoints {
   std::vector<Index> id;            // stable id, reported when a point leaves the mesh

@@ -1,39 +1,88 @@
-// The one interface behind which linear solvers sit (docs/architecture.md): the Newton loop
-// knows a sparse matrix and vectors only. The pattern is analysed once per step (the active set
-// changes only between steps) and factorised once per Newton iteration.
+// The one interface behind which linear solvers sit (docs/architecture.md): Newton knows a sparse
+// matrix and vectors only, never whether the solver factorises or iterates.
+//
+//   analyse(pattern, hints)   once per step: the pattern is fixed for the step (the active cells
+//                             change only between steps), and so is what the hints say;
+//   setup(matrix)             once per Newton iteration: the operator of the following solves
+//                             (a direct solver factorises it, an iterative one builds its
+//                             preconditioner);
+//   solve(b, x, tolerance)    any number of times against the operator of the last setup;
+//                             returns the iterations it took (1 for a direct solver).
+//
+// Solvers are created by name from a registry (solver/linear_solver_registry.cpp): one file per
+// solver, one line there.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "geompm/core/linear_algebra.hpp"
+#include "geompm/core/types.hpp"
+
 namespace geompm {
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using Vector = Eigen::VectorXd;
-
-/// A factorisation failed (singular or non-finite matrix): the step is cut back.
+/// A factorisation or a solve failed (singular or non-finite matrix, an iterative solver that did
+/// not reach its tolerance): the step is cut back.
 class LinearSolverFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
+/// A named set of the matrix's unknowns ("displacement", "pressure"; later contact multipliers,
+/// structure or rigid-body unknowns), for field-split preconditioners.
+struct LinearSolverField {
+  std::string name;
+  std::vector<Index> unknowns;  // rows of the matrix, ascending
+};
+
+/// What a solver may use besides the matrix, all in the matrix's own numbering (its rows are the
+/// free unknowns: constrained ones are not in it). A direct solver needs none of it; AMG takes
+/// the block size and the rigid-body modes of the displacement field as its near-null space,
+/// a field split takes the fields.
+struct LinearSolverHints {
+  /// Whether the matrix is symmetric (it is not in general: finite strain, non-associated flow,
+  /// F-bar and friction make the tangent unsymmetric).
+  bool symmetric = false;
+  /// Displacement components per node: the block size of the displacement field.
+  int block_size = 1;
+  /// Per node of the displacement field: its position (rigid-body modes, rigid_body_modes()).
+  std::vector<Vec3> node_coordinates;
+  /// Per row of the matrix: the node (index into node_coordinates) and component of a
+  /// displacement unknown, or -1 for an unknown of another field. A node with a constrained
+  /// component has fewer than block_size rows.
+  std::vector<Index> unknown_node;
+  std::vector<int> unknown_component;
+  /// The fields, a partition of the rows.
+  std::vector<LinearSolverField> fields;
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  /// Symbolic analysis of the sparsity pattern of `a`.
-  virtual void analyze(const SparseMatrix& a) = 0;
-  /// Numeric factorisation; the pattern must be the analysed one.
-  virtual void factorize(const SparseMatrix& a) = 0;
-  virtual Vector solve(const Vector& b) = 0;
+  /// Once per step, before the step's first setup: the step's sparsity pattern (every matrix
+  /// given to setup until the next analyse has it) and what the hints say about its unknowns.
+  virtual void analyse(const SparseMatrix& pattern, const LinearSolverHints& hints) = 0;
+  /// The operator of the following solves. The matrix must outlive them: a solver may keep a
+  /// reference to it instead of a copy. Throws LinearSolverFailure if it cannot be used.
+  virtual void setup(const SparseMatrix& matrix) = 0;
+  /// Solves A x = b for the operator A of the last setup, to `relative_tolerance` in the
+  /// relative residual |b - A x| / |b| for an iterative solver (a direct solver solves exactly,
+  /// as far as round-off goes, and ignores it); x's value on entry is not used. Valid any number
+  /// of times after one setup, for direct and iterative solvers alike: Newton re-solves against
+  /// the last operator to measure the correction a converged residual asks for. Returns the
+  /// iterations used (1 for a direct solver). Throws LinearSolverFailure if it fails.
+  virtual int solve(const Vector& b, Vector& x, double relative_tolerance) = 0;
+  /// The name it is registered under.
   virtual const char* name() const = 0;
 };
 
-/// "umfpack" (SuiteSparse, sparse direct LU; the default) or "sparse_lu" (Eigen's own, no
-/// external dependency). Throws std::invalid_argument listing the known names.
+/// A registered solver by name: "umfpack" (SuiteSparse sparse direct LU; the default) or
+/// "sparse_lu" (Eigen's own, no external dependency). Throws std::invalid_argument listing the
+/// known names.
 std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name);
+/// The registered names, the default first (for error messages and the model reader).
 std::vector<std::string> linear_solver_names();
 
 }  // namespace geompm

@@ -6,7 +6,7 @@
 // §3.8) with gamma = 1/2 is stable and damps the highest frequencies.
 #pragma once
 
-#include "geompm/solver/linear_solver.hpp"
+#include "geompm/core/linear_algebra.hpp"
 
 namespace geompm {
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "geompm/solver/newton.hpp"
@@ -291,6 +292,54 @@ TEST(NewtonEnergySearch, ACorrectionThatDoesNotDescendAnEnergyIsNotSearched) {
   }
   EXPECT_EQ(result[1].searches, 0);
   EXPECT_EQ(result[1].residuals, result[0].residuals);
+}
+
+// Newton drives the solver through the LinearSolver interface only, as it would an iterative one:
+// one setup and one solve per correction, and where the residual has converged before the
+// correction has, one more solve against the last setup (no new setup) to measure the correction
+// the converged residual asks for. The iterations the solver reports are summed.
+class CountingSolver final : public LinearSolver {
+ public:
+  void analyse(const SparseMatrix& pattern, const LinearSolverHints& hints) override {
+    inner_->analyse(pattern, hints);
+  }
+  void setup(const SparseMatrix& a) override {
+    ++setups;
+    inner_->setup(a);
+  }
+  int solve(const Vector& b, Vector& x, double relative_tolerance) override {
+    ++solves;
+    tolerance = relative_tolerance;
+    inner_->solve(b, x, relative_tolerance);
+    return 3;
+  }
+  const char* name() const override { return "counting"; }
+  int setups = 0, solves = 0;
+  double tolerance = 0.0;
+
+ private:
+  std::unique_ptr<LinearSolver> inner_ = create_linear_solver("sparse_lu");
+};
+
+TEST(NewtonLinearSolver, SetsUpOncePerCorrectionAndReSolvesForTheCorrectionCheck) {
+  // A loose residual tolerance and a tight correction tolerance: the residual converges first.
+  NewtonSettings settings = settings_to(1e-4, 30);
+  settings.displacement_tolerance = 1e-12;
+  Arctangent problem;
+  CountingSolver solver;
+  Vector x = Vector::Constant(1, 0.5);
+  SparseMatrix tangent;
+  const NewtonResult result = solve_newton(problem, solver, settings, x, tangent);
+  ASSERT_TRUE(result.converged) << result.failure;
+  EXPECT_EQ(solver.setups, result.iterations);
+  EXPECT_GT(solver.solves, solver.setups);  // the correction checks
+  EXPECT_EQ(result.linear_iterations, 3 * result.iterations);
+  EXPECT_EQ(solver.tolerance, settings.linear_tolerance);
+  // The same iterates as with the solver used directly.
+  Vector y;
+  const NewtonResult direct = solve_arctangent(1.0, settings, 0.5, y);
+  EXPECT_EQ(result.residuals, direct.residuals);
+  EXPECT_EQ(x(0), y(0));
 }
 
 }  // namespace

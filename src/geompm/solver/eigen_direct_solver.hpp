@@ -1,13 +1,16 @@
-#include "geompm/solver/linear_solver.hpp"
+// The direct solvers Eigen wraps (UMFPACK, Eigen's SparseLU) behind LinearSolver: one symbolic
+// analysis per analyse(), one numeric factorisation per setup(), one back-substitution per
+// solve(). Each is registered by its own file (umfpack_solver.cpp, sparse_lu_solver.cpp).
+#pragma once
 
 #include <omp.h>
 
-#include <Eigen/SparseLU>
-#include <Eigen/UmfPackSupport>
+#include <Eigen/SparseCore>
+#include <string>
+
+#include "geompm/solver/linear_solver.hpp"
 
 namespace geompm {
-
-namespace {
 
 // Runs the solver's calls on one OpenMP thread. OpenBLAS's OpenMP build (scripts/setup.sh), which
 // UMFPACK calls for its dense frontal updates, runs its kernels on as many threads as OpenMP
@@ -28,44 +31,41 @@ class OneThread {
 };
 
 template <class Factorization>
-class EigenSolver final : public LinearSolver {
+class EigenDirectSolver : public LinearSolver {
  public:
-  explicit EigenSolver(const char* name) : name_(name) {}
-  void analyze(const SparseMatrix& a) override {
-    const OneThread one;
-    solver_.analyzePattern(a);
+  explicit EigenDirectSolver(const char* name) : name_(name) {}
+
+  // The symbolic analysis is done at the first setup after analyse(), on that matrix: UMFPACK's
+  // takes the matrix's values too (for its statistics of the diagonal), and the step's pattern
+  // holds no tangent yet when analyse() is called. The hints are of no use to a direct solver.
+  void analyse(const SparseMatrix& /*pattern*/, const LinearSolverHints& /*hints*/) override {
+    analysed_ = false;
   }
-  void factorize(const SparseMatrix& a) override {
+  void setup(const SparseMatrix& a) override {
     const OneThread one;
+    if (!analysed_) {
+      solver_.analyzePattern(a);
+      analysed_ = true;
+    }
     solver_.factorize(a);
     if (solver_.info() != Eigen::Success)
       throw LinearSolverFailure(std::string(name_) + ": the matrix is singular or not finite");
   }
-  Vector solve(const Vector& b) override {
+  // One back-substitution with the factorisation of the last setup: exact up to round-off, so
+  // the tolerance is not needed.
+  int solve(const Vector& b, Vector& x, double /*relative_tolerance*/) override {
     const OneThread one;
-    Vector x = solver_.solve(b);
+    x = solver_.solve(b);
     if (solver_.info() != Eigen::Success || !x.allFinite())
       throw LinearSolverFailure(std::string(name_) + ": the solve failed");
-    return x;
+    return 1;
   }
   const char* name() const override { return name_; }
 
  private:
   const char* name_;
+  bool analysed_ = false;
   Factorization solver_;
 };
-
-}  // namespace
-
-std::vector<std::string> linear_solver_names() { return {"umfpack", "sparse_lu"}; }
-
-std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name) {
-  if (name == "umfpack")
-    return std::make_unique<EigenSolver<Eigen::UmfPackLU<SparseMatrix>>>("umfpack");
-  if (name == "sparse_lu")
-    return std::make_unique<EigenSolver<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>>(
-        "sparse_lu");
-  throw std::invalid_argument("unknown linear solver '" + name + "'; known: umfpack, sparse_lu");
-}
 
 }  // namespace geompm
