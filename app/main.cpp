@@ -1,18 +1,22 @@
 // The geompm command line: run a model, check it, or plot a history.
 //
-// Exit codes: 0 success, 1 bad command line, 2 bad input (model or mesh file), 3 the run stopped
-// (no convergence at the smallest time step, a point left the mesh), 4 an internal error.
+// Exit codes: 0 success, 1 bad command line, 2 bad input (model or mesh file, a checkpoint that
+// is missing or cannot be used by --resume), 3 the run stopped (no convergence at the smallest time
+// step, a point left the mesh), 4 an internal error.
 #include <fmt/format.h>
 #include <omp.h>
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <optional>
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
 #include "geompm/core/error.hpp"
+#include "geompm/core/fnv1a.hpp"
 #include "geompm/io/model_reader.hpp"
 #include "geompm/io/plot.hpp"
 #include "geompm/mesh/cell_type.hpp"
@@ -20,17 +24,33 @@
 
 namespace {
 
-int run_command(const std::string& model_file, std::string output, int threads, bool quiet) {
-  if (threads > 0) omp_set_num_threads(threads);
+struct RunCommand {
+  std::string model_file, output;
+  int threads = 0;
+  bool quiet = false;
+  bool resume = false;
+  std::optional<int> checkpoint_every;
+};
+
+int run_command(const RunCommand& command) {
+  if (command.threads > 0) omp_set_num_threads(command.threads);
   // Read and build everything before anything is written, so bad input leaves no output.
-  const auto spec = geompm::read_model(model_file);
+  const auto spec = geompm::read_model(command.model_file);
   auto model = geompm::build_model(spec);
-  if (output.empty()) output = std::filesystem::path(model_file).stem().string() + "_results";
-  if (!quiet) std::cerr << geompm::describe_model(*model);
+  std::string output = command.output;
+  if (output.empty())
+    output = std::filesystem::path(command.model_file).stem().string() + "_results";
+  if (!command.quiet) std::cerr << geompm::describe_model(*model);
   geompm::RunOptions options;
   options.output_dir = output;
-  options.progress = !quiet;
+  options.progress = !command.quiet;
   options.log = &std::cerr;
+  options.resume = command.resume;
+  options.checkpoint_every = command.checkpoint_every;
+  // The text read_model has just read: a checkpoint is only resumed with the same model.
+  std::ifstream in(command.model_file, std::ios::binary);
+  options.model_hash = geompm::fnv1a_64(
+      std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
   geompm::run_analysis(*model, options);
   return 0;
 }
@@ -49,16 +69,24 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("geompm ") + GEOMPM_VERSION);
   app.require_subcommand(1);
 
-  std::string model_file, output;
-  int threads = 0;
-  bool quiet = false;
+  std::string model_file;
+  RunCommand run_options;
   auto* run = app.add_subcommand("run", "run an analysis");
-  run->add_option("model", model_file, "model file (YAML or JSON)")->required();
-  run->add_option("-o,--output", output, "output directory (default: <model name>_results)");
-  run->add_option("-t,--threads", threads, "number of threads (default: all cores)")
+  run->add_option("model", run_options.model_file, "model file (YAML or JSON)")->required();
+  run->add_option("-o,--output", run_options.output,
+                  "output directory (default: <model name>_results)");
+  run->add_option("-t,--threads", run_options.threads, "number of threads (default: all cores)")
       ->check(CLI::Range(1, 4096).description("a whole number >= 1"));
-  run->add_flag("-q,--quiet", quiet,
+  run->add_flag("-q,--quiet", run_options.quiet,
                 "no model description or progress line (the closing summary is still printed)");
+  run->add_flag("--resume", run_options.resume,
+                "continue the run in the output directory from its last checkpoint "
+                "(checkpoint.bin), with the same model file");
+  run->add_option("--checkpoint-every", run_options.checkpoint_every,
+                  "write a checkpoint every STEPS converged steps (0: not by steps; default: "
+                  "output.checkpoint.every_steps of the model, 100)")
+      ->type_name("STEPS")
+      ->check(CLI::Range(0, 1000000000).description("a whole number >= 0"));
 
   auto* check =
       app.add_subcommand("check", "validate a model and print a summary, without running");
@@ -107,7 +135,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 1;
   }
   try {
-    if (*run) return run_command(model_file, output, threads, quiet);
+    if (*run) return run_command(run_options);
     if (*check) return check_command(model_file);
     if (*mesh) {
       const auto type = geompm::parse_cell_type(cell);

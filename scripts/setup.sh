@@ -12,6 +12,7 @@ packages=(
   libyaml-cpp-dev        # model files (YAML, with line numbers for errors)
   libmuparser-dev        # expressions of x, y, z, t in model files
   libcli11-dev           # command line
+  nlohmann-json3-dev     # summary.json (header-only JSON writer and reader)
   libfmt-dev             # formatting
   libgmsh-dev            # Gmsh .msh import and unstructured mesh generation
   libgd-dev              # PNG plots of histories

@@ -10,6 +10,7 @@
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
+#include "geompm/core/byte_archive.hpp"
 #include "geompm/core/expression.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
@@ -18,6 +19,21 @@
 #include "geompm/points/seeding.hpp"
 
 namespace geompm {
+
+void Model::save_state(ByteWriter& out) const {
+  out.put(grid_displacement);
+  out.put(footing_displacement);
+  out.put(lost_mass);
+  out.put(lost_points);
+}
+
+void Model::load_state(ByteReader& in) {
+  in.get(grid_displacement);
+  in.get(footing_displacement);
+  in.get(lost_mass);
+  in.get(lost_points);
+  in.expect_end();
+}
 
 std::vector<const Material*> Model::material_pointers() const {
   std::vector<const Material*> out;

@@ -16,6 +16,9 @@
 
 namespace geompm {
 
+class ByteWriter;
+class ByteReader;
+
 struct Model {
   spec::Model spec;
   Mesh mesh;
@@ -33,6 +36,10 @@ struct Model {
   Index lost_points = 0;
 
   Kinematics kinematics() const { return spec.kinematics; }
+  /// What a run changes besides the points (displacements so far, lost points), for a
+  /// checkpoint; the points are saved by MaterialPoints::save.
+  void save_state(ByteWriter& out) const;
+  void load_state(ByteReader& in);
   std::vector<const Material*> material_pointers() const;
   int point_set_bit(const std::string& name) const;  // -1 if unknown
   /// The largest reference modulus of the materials the points carry (the scale of the empty

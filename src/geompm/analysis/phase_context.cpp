@@ -1,6 +1,11 @@
 #include "geompm/analysis/phase_context.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+
+#include "geompm/core/byte_archive.hpp"
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -36,6 +41,27 @@ Vec3 PhaseContext::motion_increment(const Motion& m, double t0, double t1) const
 
 Vec3 PhaseContext::load(const Load& l, double t) const {
   return Vec3(l.components[0].at_time(t), l.components[1].at_time(t), l.components[2].at_time(t));
+}
+
+void PhaseContext::save(ByteWriter& out) const {
+  out.put(static_cast<std::uint64_t>(motions.size()));
+  for (const Motion& m : motions) out.put(m.done);
+  out.put(static_cast<std::uint64_t>(footings.size()));
+  for (const RigidFooting& f : footings) f.save(out);
+}
+
+void PhaseContext::load(ByteReader& in) {
+  const auto expect = [&](std::size_t here, const char* what) {
+    const auto saved = in.get<std::uint64_t>();
+    if (saved != here)
+      throw InputError(fmt::format("{}: {} {} saved, the phase '{}' has {}", in.context(), saved,
+                                   what, spec->name, here));
+  };
+  expect(motions.size(), "prescribed motions");
+  for (Motion& m : motions) in.get(m.done);
+  expect(footings.size(), "rigid footings");
+  for (RigidFooting& f : footings) f.load(in);
+  in.expect_end();
 }
 
 }  // namespace geompm

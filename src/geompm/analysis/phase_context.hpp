@@ -41,6 +41,11 @@ struct PhaseContext {
   Vec3 motion_increment(const Motion& m, double t0, double t1) const;
   /// Force of load l at phase time t.
   Vec3 load(const Load& l, double t) const;
+
+  /// What persists from step to step (the motions' `done`, the footings' state), for a
+  /// checkpoint; load() expects the phase the checkpoint was written in.
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
 };
 
 }  // namespace geompm

@@ -1,14 +1,17 @@
 // The analysis driver: phases in sequence, each stepping through its duration with adaptive time
 // steps (cut back on failure and retried from the last converged state, grown after easy steps),
 // writing ParaView files, the history CSV and plots as it goes, so that a run that stops keeps
-// every finished step.
+// every finished step, and checkpoints from which a killed run resumes.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <vector>
 
 #include "geompm/analysis/model.hpp"
+#include "geompm/analysis/run_summary.hpp"
 
 namespace geompm {
 
@@ -16,20 +19,20 @@ struct RunOptions {
   std::filesystem::path output_dir;
   bool progress = true;         // live progress line on the log stream
   std::ostream* log = nullptr;  // where progress and the summary go (nullptr: nowhere)
+  /// Continue the run in output_dir from its checkpoint (geompm run --resume).
+  bool resume = false;
+  /// Converged steps between checkpoints, instead of output.checkpoint.every_steps (0: not by
+  /// steps; geompm run --checkpoint-every).
+  std::optional<int> checkpoint_every;
+  /// FNV-1a 64 of the model file's text: recorded in checkpoints and summary.json; a checkpoint
+  /// of another model is refused.
+  std::uint64_t model_hash = 0;
 };
 
-struct RunSummary {
-  double wall_seconds = 0.0;
-  int steps = 0;
-  int iterations = 0;
-  int cutbacks = 0;
-  int max_iterations_in_a_step = 0;
-  std::vector<std::vector<double>> residual_histories;  // per converged step
-  std::filesystem::path history_file;
-};
-
-/// Runs every phase. Throws RunError when a step cannot converge at the minimum time step or a
-/// point leaves the mesh under the "stop" policy; everything finished before is on disk.
+/// Runs every phase (or, with options.resume, what is left of them after the checkpoint). Throws
+/// RunError when a step cannot converge at the minimum time step or a point leaves the mesh
+/// under the "stop" policy; everything finished before is on disk, and summary.json says why
+/// the run stopped. Throws InputError if a run to resume has no usable checkpoint.
 RunSummary run_analysis(Model& model, const RunOptions& options);
 
 }  // namespace geompm

@@ -61,6 +61,7 @@ class StepSolver {
 
   GridSystem& grid() { return grid_; }
   PressureField& pressure() { return pressure_; }
+  const PressureField& pressure() const { return pressure_; }
 
   /// Forgets the last step's increment, so that the phase's first step does not extrapolate the
   /// previous phase's path (`newton: {predictor: extrapolated}`), and the last nodal pressure

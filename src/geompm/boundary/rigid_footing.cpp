@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <optional>
+#include <vector>
 
 #include "geompm/boundary/grid_motions.hpp"
+#include "geompm/core/byte_archive.hpp"
 
 namespace geompm {
 
@@ -212,6 +214,22 @@ std::optional<Vec3> RigidFooting::anchor(Index id) const {
 void RigidFooting::commit(const Vec3& displacement, std::unordered_map<Index, Vec3> touching) {
   done_ = displacement;
   anchors_ = std::move(touching);
+}
+
+void RigidFooting::save(ByteWriter& out) const {
+  out.put(done_);
+  // Sorted by point id: the same state always gives the same bytes.
+  std::vector<std::pair<Index, Vec3>> anchors(anchors_.begin(), anchors_.end());
+  std::sort(anchors.begin(), anchors.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  out.put(anchors);
+}
+
+void RigidFooting::load(ByteReader& in) {
+  in.get(done_);
+  std::vector<std::pair<Index, Vec3>> anchors;
+  in.get(anchors);
+  anchors_ = std::unordered_map<Index, Vec3>(anchors.begin(), anchors.end());
 }
 
 }  // namespace geompm

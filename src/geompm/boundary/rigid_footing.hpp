@@ -16,6 +16,9 @@
 
 namespace geompm {
 
+class ByteWriter;
+class ByteReader;
+
 /// Where the footing is at one instant: the elevation of its base, its footprint [low_t,
 /// high_t] along each horizontal axis t (x in 2D, the radius in axisymmetry; x and y in 3D) and
 /// its displacement since the start of the phase.
@@ -88,6 +91,10 @@ class RigidFooting {
   /// After a converged step: the displacement reached, and the points pressed against the base
   /// at its end with the anchors they used (the others lose theirs).
   void commit(const Vec3& displacement, std::unordered_map<Index, Vec3> touching);
+
+  /// The state kept from step to step (displacement reached, anchors), for a checkpoint.
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
 
  private:
   spec::RigidFooting spec_;

@@ -10,16 +10,47 @@ namespace geompm {
 
 HistoryWriter::HistoryWriter(const std::filesystem::path& file,
                              const std::vector<std::string>& columns)
-    : file_(file), out_(file, std::ios::trunc), columns_(columns.size()) {
+    : file_(file), out_(file, std::ios::trunc | std::ios::binary), columns_(columns.size()) {
   if (!out_) throw RunError("cannot write history file " + file.string());
-  for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << columns[i];
-  out_ << '\n' << std::flush;
+  std::string header;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) header += ',';
+    header += columns[i];
+  }
+  header += '\n';
+  out_ << header << std::flush;
+  size_ = header.size();
+}
+
+void HistoryWriter::check_resumable(const std::filesystem::path& file, std::uintmax_t size) {
+  std::error_code error;
+  const std::uintmax_t found = std::filesystem::file_size(file, error);
+  if (error || found < size)
+    throw InputError(fmt::format(
+        "{}: {} at the checkpoint it had {} bytes; cannot resume without the history written "
+        "up to the checkpoint (run again without --resume)",
+        file.string(), error ? "missing;" : fmt::format("{} bytes, but", found), size));
+}
+
+HistoryWriter::HistoryWriter(const std::filesystem::path& file,
+                             const std::vector<std::string>& columns, std::uintmax_t size)
+    : file_(file), columns_(columns.size()), size_(size) {
+  check_resumable(file, size);
+  // What the stopped run wrote after its checkpoint is written again by the resumed run.
+  std::filesystem::resize_file(file, size);
+  out_.open(file, std::ios::app | std::ios::binary);
+  if (!out_) throw RunError("cannot write history file " + file.string());
 }
 
 void HistoryWriter::append(const std::vector<double>& values) {
-  for (std::size_t i = 0; i < values.size() && i < columns_; ++i)
-    out_ << (i ? "," : "") << fmt::format("{:.10g}", values[i]);
-  out_ << '\n' << std::flush;  // a stopped run keeps every finished step
+  std::string row;
+  for (std::size_t i = 0; i < values.size() && i < columns_; ++i) {
+    if (i) row += ',';  // (not "," + text: GCC 12 warns, wrongly, -Wrestrict)
+    row += fmt::format("{:.10g}", values[i]);
+  }
+  row += '\n';
+  out_ << row << std::flush;  // a stopped run keeps every finished step
+  size_ += row.size();
 }
 
 std::size_t CsvTable::column(const std::string& name, const std::string& file) const {

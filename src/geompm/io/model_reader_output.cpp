@@ -1,4 +1,5 @@
-// Model file section `output`: ParaView files, history columns and the plots drawn from them.
+// Model file section `output`: ParaView files, history columns, the plots drawn from them and
+// when checkpoints are written.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -142,10 +143,28 @@ spec::Plot read_plot(const yaml::Node& node, const std::vector<std::string>& col
   return plot;
 }
 
+spec::Checkpoint read_checkpoint_schedule(const yaml::Node& node) {
+  const yaml::Map section = node.map({"every_steps", "every_minutes"});
+  spec::Checkpoint checkpoint;
+  if (auto every = section.find("every_steps")) {
+    checkpoint.every_steps = every->integer();
+    if (checkpoint.every_steps < 0)
+      every->fail(fmt::format("expected a whole number of steps >= 0 (0 = not by steps), found {}",
+                              checkpoint.every_steps));
+  }
+  if (auto every = section.find("every_minutes")) {
+    checkpoint.every_minutes = every->number();
+    if (checkpoint.every_minutes < 0)
+      every->fail(fmt::format("expected a number of minutes >= 0 (0 = not by time), found {}",
+                              checkpoint.every_minutes));
+  }
+  return checkpoint;
+}
+
 }  // namespace
 
 spec::Output read_output(const yaml::Node& node, const Context& context) {
-  const yaml::Map section = node.map({"vtk", "history", "plots"});
+  const yaml::Map section = node.map({"vtk", "history", "plots", "checkpoint"});
   spec::Output output;
   if (auto vtk_node = section.find_non_empty("vtk")) {
     const yaml::Map vtk = vtk_node->map({"every", "grid"});
@@ -157,6 +176,8 @@ spec::Output read_output(const yaml::Node& node, const Context& context) {
     }
     output.vtk_grid = vtk.boolean_or("grid", output.vtk_grid);
   }
+  if (auto checkpoint = section.find_non_empty("checkpoint"))
+    output.checkpoint = read_checkpoint_schedule(*checkpoint);
   std::vector<std::string> columns = engine_columns;
   if (auto histories = section.find_non_empty("history"))
     for (const yaml::Node& item : histories->items()) {

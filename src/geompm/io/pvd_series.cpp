@@ -18,7 +18,19 @@ void PvdSeries::add(double time, const std::string& relative_file) {
     throw std::invalid_argument(
         fmt::format("{}: time {} of '{}' is not finite", pvd_file_.string(), time, relative_file));
   entries_.emplace_back(time, relative_file);
+  write();
+}
 
+void PvdSeries::restore(std::vector<std::pair<double, std::string>> entries) {
+  entries_ = std::move(entries);
+  // An empty series has no file, as in a run that never stopped.
+  if (entries_.empty())
+    std::filesystem::remove(pvd_file_);
+  else
+    write();
+}
+
+void PvdSeries::write() const {
   std::string xml =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

@@ -30,7 +30,13 @@ class PvdSeries {
   void add(double time, const std::string& relative_file);
   const std::filesystem::path& path() const { return pvd_file_; }
 
+  /// The (time, file) entries so far, as a checkpoint saves them.
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  /// A resumed run's series: the entries at the checkpoint, written out at once (if any).
+  void restore(std::vector<std::pair<double, std::string>> entries);
+
  private:
+  void write() const;
   std::filesystem::path pvd_file_;
   std::vector<std::pair<double, std::string>> entries_;
 };

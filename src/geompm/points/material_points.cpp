@@ -1,6 +1,11 @@
 #include "geompm/points/material_points.hpp"
 
+#include <fmt/format.h>
+
 #include <numeric>
+
+#include "geompm/core/byte_archive.hpp"
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -85,6 +90,21 @@ void MaterialPoints::sort_by_cell() {
   for_each_field(*this, [&](auto& field) {
     auto copy = field;
     for (std::size_t i = 0; i < order.size(); ++i) field[i] = copy[order[i]];
+  });
+}
+
+// Through for_each_field, so that a field added to the store is saved without another edit.
+void MaterialPoints::save(ByteWriter& out) const {
+  for_each_field(const_cast<MaterialPoints&>(*this), [&](const auto& field) { out.put(field); });
+}
+
+void MaterialPoints::load(ByteReader& in) {
+  for_each_field(*this, [&](auto& field) { in.get(field); });
+  in.expect_end();
+  for_each_field(*this, [&](const auto& field) {
+    if (field.size() != id.size())
+      throw InputError(fmt::format("{}: {} points, but an array of {} values", in.context(),
+                                   id.size(), field.size()));
   });
 }
 

@@ -12,6 +12,9 @@
 
 namespace geompm {
 
+class ByteWriter;
+class ByteReader;
+
 struct MaterialPoints {
   std::vector<Index> id;            // stable id, reported when a point leaves the mesh
   std::vector<Index> body;          // index into the model's bodies
@@ -64,6 +67,11 @@ struct MaterialPoints {
 
   /// Sorts the points by cell (stable), so that a cell's points are contiguous in memory.
   void sort_by_cell();
+
+  /// Writes every array (a checkpoint's "points" section), bit for bit, in the points' order.
+  void save(ByteWriter& out) const;
+  /// Replaces every array by what save() wrote; throws InputError if the arrays' lengths differ.
+  void load(ByteReader& in);
 
   /// Bytes held per point by the arrays (capacity included), for docs/performance.md.
   double bytes_per_point() const;

@@ -226,11 +226,20 @@ struct Plot {
   SourceLocation source;
 };
 
+/// When `geompm run` saves the state of the run to checkpoint.bin (and at the end of each
+/// phase); both 0: never. Defaults: a killed run loses at most 100 steps or 10 minutes of work,
+/// and a checkpoint costs little next to 100 steps (docs/user-guide.md, "Checkpoints").
+struct Checkpoint {
+  int every_steps = 100;      // converged steps between checkpoints (0: not by steps)
+  double every_minutes = 10;  // wall-clock minutes between checkpoints (0: not by time)
+};
+
 struct Output {
   int vtk_every = 1;     // write ParaView files every n converged steps (0 = never)
   bool vtk_grid = true;  // also write the grid with nodal fields
   std::vector<History> histories;
   std::vector<Plot> plots;
+  Checkpoint checkpoint;
 };
 
 enum class LostPointPolicy { Stop, Remove };

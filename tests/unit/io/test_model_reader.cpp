@@ -277,6 +277,29 @@ phases:
   EXPECT_EQ(m.numerics.linear_solver, defaults.numerics.linear_solver);
 }
 
+TEST(ModelReader, ReadsTheCheckpointSchedule) {
+  const std::string vtk = "  vtk: {every: 2, grid: false}\n";
+  const spec::Model given = read_model_from_string(
+      apply(kValidModel, {{vtk, vtk + "  checkpoint: {every_steps: 25, every_minutes: 2.5}\n"}}),
+      "model.yaml");
+  EXPECT_EQ(given.output.checkpoint.every_steps, 25);
+  EXPECT_DOUBLE_EQ(given.output.checkpoint.every_minutes, 2.5);
+  const spec::Model off = read_model_from_string(
+      apply(kValidModel, {{vtk, vtk + "  checkpoint: {every_steps: 0, every_minutes: 0}\n"}}),
+      "model.yaml");
+  EXPECT_EQ(off.output.checkpoint.every_steps, 0);
+  EXPECT_EQ(off.output.checkpoint.every_minutes, 0.0);
+  // Defaults (docs/user-guide.md): every 100 steps and every 10 minutes; one key alone keeps the
+  // other's default.
+  const spec::Model defaults = read_model_from_string(kValidModel, "model.yaml");
+  EXPECT_EQ(defaults.output.checkpoint.every_steps, 100);
+  EXPECT_DOUBLE_EQ(defaults.output.checkpoint.every_minutes, 10.0);
+  const spec::Model steps_only = read_model_from_string(
+      apply(kValidModel, {{vtk, vtk + "  checkpoint: {every_steps: 7}\n"}}), "model.yaml");
+  EXPECT_EQ(steps_only.output.checkpoint.every_steps, 7);
+  EXPECT_DOUBLE_EQ(steps_only.output.checkpoint.every_minutes, 10.0);
+}
+
 TEST(ModelReader, TreatsOptionalListsLeftEmptyAsAbsent) {
   // What remains when every entry of an optional list has been commented out.
   const spec::Model m = read_model_from_string(R"m(

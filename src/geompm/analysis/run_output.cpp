@@ -1,0 +1,158 @@
+#include "geompm/analysis/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+
+#include "geompm/analysis/output_fields.hpp"
+#include "geompm/io/plot.hpp"
+
+namespace geompm {
+
+namespace {
+
+const std::vector<std::string> newton_columns = {"step",
+                                                 "time",
+                                                 "dt",
+                                                 "iteration",
+                                                 "relative_residual",
+                                                 "relative_correction",
+                                                 "converged",
+                                                 "largest_residual_node",
+                                                 "largest_residual_unknown",
+                                                 "tangent_error",
+                                                 "plastic_points",
+                                                 "plastic_changes",
+                                                 "largest_correction_node",
+                                                 "largest_correction_unknown",
+                                                 "step_length"};
+
+}  // namespace
+
+OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved,
+                                                     const std::filesystem::path& dir) {
+  Positions at;
+  saved.get(at.history);
+  saved.get(at.newton);
+  saved.get(at.points);
+  saved.get(at.grid);
+  saved.get(at.last_values);
+  saved.expect_end();
+  // Both files are checked before either is cut back, so a refused resume changes nothing.
+  HistoryWriter::check_resumable(dir / "history.csv", at.history);
+  HistoryWriter::check_resumable(dir / "newton.csv", at.newton);
+  return at;
+}
+
+OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir)
+    : OutputWriter(model, dir, std::optional<Positions>()) {}
+
+OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir, ByteReader& saved)
+    : OutputWriter(model, dir, std::optional<Positions>(read_positions(saved, dir))) {}
+
+// One constructor for both: a resumed run opens the same files in the same order, each cut back
+// to its length at the checkpoint.
+OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
+                           std::optional<Positions> resume)
+    : model_(model),
+      dir_((std::filesystem::create_directories(dir / "vtk"), dir)),
+      points_series_(dir / "points.pvd"),
+      grid_series_(dir / "grid.pvd"),
+      recorder_(model),
+      columns_(recorder_.columns()),
+      history_(resume ? HistoryWriter(dir / "history.csv", columns_, resume->history)
+                      : HistoryWriter(dir / "history.csv", columns_)),
+      newton_(resume ? HistoryWriter(dir / "newton.csv", newton_columns, resume->newton)
+                     : HistoryWriter(dir / "newton.csv", newton_columns)) {
+  if (!resume) return;
+  points_series_.restore(std::move(resume->points));
+  grid_series_.restore(std::move(resume->grid));
+  last_values_ = std::move(resume->last_values);
+}
+
+void OutputWriter::save(ByteWriter& out) const {
+  out.put(static_cast<std::uintmax_t>(history_.size()));
+  out.put(static_cast<std::uintmax_t>(newton_.size()));
+  out.put(points_series_.entries());
+  out.put(grid_series_.entries());
+  out.put(last_values_);
+}
+
+// One row per iteration, with where the residual is largest (mesh node; 0, 1, 2 = force in x, y,
+// z, 3 = pressure equation), with `newton.tangent_check`, the tangent's error along the
+// correction that follows (0 when the check is off or no correction followed), and the points
+// returned plastically with how many switched between elastic and plastic since the iterate
+// before (-1 at an attempt's first iterate), and the unknown the correction that led to the
+// iterate moved most (node -1 at an attempt's first iterate), and the fraction of that correction
+// kept (1 for the full Newton correction, less where backtracking or the energy line search
+// shortened it; 0 at an attempt's first iterate).
+void OutputWriter::newton_log(int step_number, double time, double dt, const StepResult& step) {
+  const NewtonResult& newton = step.newton;
+  for (std::size_t k = 0; k < newton.residuals.size(); ++k) {
+    const UnknownAt at = k < step.largest_residual.size() ? step.largest_residual[k] : UnknownAt{};
+    const UnknownAt moved = k > 0 && k - 1 < step.largest_correction.size()
+                                ? step.largest_correction[k - 1]
+                                : UnknownAt{};
+    newton_.append(
+        {double(step_number), time, dt, double(k), newton.residuals[k],
+         k > 0 && k - 1 < newton.corrections.size() ? newton.corrections[k - 1] : 0.0,
+         newton.converged ? 1.0 : 0.0, double(at.node), double(at.unknown),
+         k < newton.tangent_errors.size() ? newton.tangent_errors[k] : 0.0,
+         k < newton.active.size() ? double(newton.active[k].size) : -1.0,
+         k < newton.active.size() ? double(newton.active[k].changed) : -1.0, double(moved.node),
+         double(moved.unknown),
+         k > 0 && k - 1 < newton.step_lengths.size() ? newton.step_lengths[k - 1] : 0.0});
+  }
+}
+
+void OutputWriter::initial() {
+  write_points(0.0, 0);
+  append_history(recorder_.initial_values(model_));
+}
+
+void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseContext& phase,
+                        double phase_time, double time, int step_number, double dt, bool vtk) {
+  append_history(recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt));
+  if (!vtk) return;
+  write_points(time, step_number);
+  if (model_.spec.output.vtk_grid) {
+    FieldSet nodes, cells;
+    grid_fields(model_, grid, step, nodes, cells);
+    const std::string name = fmt::format("vtk/grid_{:06d}.vtu", step_number);
+    write_vtu_mesh(dir_ / name, model_.mesh, model_.mesh.nodes, nodes, cells);
+    grid_series_.add(time, name);
+  }
+}
+
+std::vector<std::filesystem::path> OutputWriter::plots() {
+  std::vector<std::filesystem::path> written;
+  for (const auto& p : model_.spec.output.plots) {
+    PlotRequest request;
+    request.csv = history_.path();
+    request.x = p.x;
+    request.y = p.y;
+    request.x_scale = p.x_scale;
+    request.y_scale = p.y_scale;
+    request.title = p.title.empty() ? model_.spec.title : p.title;
+    plot_history(request, dir_ / p.file);
+    written.push_back(dir_ / p.file);
+  }
+  return written;
+}
+
+void OutputWriter::append_history(const std::vector<double>& values) {
+  history_.append(values);
+  // As the CSV has them (10 significant digits), so that summary.json agrees with history.csv.
+  last_values_.clear();
+  // strtod, not stod: a subnormal value is a value, not an error.
+  for (const double v : values)
+    last_values_.push_back(std::strtod(fmt::format("{:.10g}", v).c_str(), nullptr));
+}
+
+void OutputWriter::write_points(double time, int step_number) {
+  const std::string name = fmt::format("vtk/points_{:06d}.vtu", step_number);
+  write_vtu_points(dir_ / name, model_.points.position, point_fields(model_));
+  points_series_.add(time, name);
+}
+
+}  // namespace geompm

@@ -1,0 +1,71 @@
+// What a run writes as it goes, into its output directory: the history (history.csv), every
+// Newton iteration (newton.csv), the ParaView series of the points and the grid (points.pvd,
+// grid.pvd, vtk/*.vtu) and, at the end, the plots. Everything is flushed step by step, so a run
+// that stops keeps every finished step; a resumed run goes on with the files as they were at its
+// checkpoint (save() / the resuming constructor).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geompm/analysis/histories.hpp"
+#include "geompm/analysis/model.hpp"
+#include "geompm/analysis/phase_context.hpp"
+#include "geompm/analysis/step.hpp"
+#include "geompm/core/byte_archive.hpp"
+#include "geompm/io/history_writer.hpp"
+#include "geompm/io/vtk_writer.hpp"
+
+namespace geompm {
+
+class OutputWriter {
+ public:
+  /// A new run: creates the output files (and vtk/), writing the CSV headers.
+  OutputWriter(Model& model, const std::filesystem::path& dir);
+  /// A resumed run: the files cut back to what they held when save() wrote `saved`.
+  OutputWriter(Model& model, const std::filesystem::path& dir, ByteReader& saved);
+
+  /// Where the files are (their lengths, the series' entries, the last history row), for a
+  /// checkpoint.
+  void save(ByteWriter& out) const;
+
+  /// Every Newton attempt, converged or cut back: one row per iteration in newton.csv.
+  void newton_log(int step_number, double time, double dt, const StepResult& step);
+  /// The initial state (step 0): the points' series and the history's first row.
+  void initial();
+  /// A converged step: its history row and, if `vtk`, its ParaView files.
+  void step(GridSystem& grid, const StepResult& step, const PhaseContext& phase, double phase_time,
+            double time, int step_number, double dt, bool vtk);
+  /// Draws the plots the model asks for; returns the files written.
+  std::vector<std::filesystem::path> plots();
+
+  const std::filesystem::path& history_file() const { return history_.path(); }
+  /// history.csv's columns and its last row as written (the values it reads back as).
+  const std::vector<std::string>& columns() const { return columns_; }
+  const std::vector<double>& last_values() const { return last_values_; }
+
+ private:
+  struct Positions {
+    std::uintmax_t history = 0, newton = 0;  // bytes of history.csv and newton.csv
+    std::vector<std::pair<double, std::string>> points, grid;  // the series' entries
+    std::vector<double> last_values;
+  };
+  static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir);
+  OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
+  void append_history(const std::vector<double>& values);
+  void write_points(double time, int step_number);
+
+  Model& model_;
+  std::filesystem::path dir_;
+  PvdSeries points_series_, grid_series_;
+  HistoryRecorder recorder_;
+  std::vector<std::string> columns_;
+  HistoryWriter history_;
+  HistoryWriter newton_;
+  std::vector<double> last_values_;
+};
+
+}  // namespace geompm

@@ -1,0 +1,240 @@
+#include "geompm/analysis/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "geompm/core/error.hpp"
+#include "geompm/io/checkpoint_file.hpp"
+
+namespace geompm {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Test only: GEOMPM_TEST_KILL_IN_CHECKPOINT=N kills the process half-way through writing its
+// N-th checkpoint (tests/examples/test_checkpoints.cpp), as a crash in the middle would.
+int kill_in_checkpoint() {
+  const char* value = std::getenv("GEOMPM_TEST_KILL_IN_CHECKPOINT");
+  return value ? std::atoi(value) : 0;
+}
+
+}  // namespace
+
+std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir) {
+  return output_dir / "checkpoint.bin";
+}
+
+StepControlSettings step_control_settings(const spec::TimeStepping& ts) {
+  return {ts.initial, ts.min, ts.max, ts.growth, ts.cutback, ts.easy_iterations};
+}
+
+Simulation::Simulation(Model& model, const RunOptions& options)
+    : model_(model),
+      options_(options),
+      solver_(create_linear_solver(model.spec.numerics.linear_solver)),
+      stepper_(model, *solver_),
+      progress_(options.log, options.progress),
+      started_(Clock::now()),
+      phase_started_(started_),
+      last_checkpoint_(started_),
+      kill_in_checkpoint_(kill_in_checkpoint()) {
+  summary_.model_file = model.spec.file;
+  summary_.model_hash = options.model_hash;
+  for (const auto& phase : model.spec.phases) summary_.phases.push_back({.name = phase.name});
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::start() {
+  // What an earlier run in the same directory left must not be mistaken for this run's: its
+  // checkpoint (a later --resume would go back to it), its summary, a half-written checkpoint.
+  const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
+  std::filesystem::remove(checkpoint);
+  std::filesystem::remove(checkpoint_temporary(checkpoint));
+  std::filesystem::remove(options_.output_dir / "summary.json");
+  output_ = std::make_unique<OutputWriter>(model_, options_.output_dir);
+  output_->initial();
+  summary_.history_file = output_->history_file();
+}
+
+void Simulation::resume() {
+  const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
+  if (!std::filesystem::is_regular_file(checkpoint))
+    throw InputError(fmt::format(
+        "{}: no checkpoint to resume from (a run writes one every output.checkpoint.every_steps "
+        "steps or every_minutes minutes, and at the end of each phase); run without --resume "
+        "to start again",
+        checkpoint.string()));
+  load(checkpoint);
+  // A half-written checkpoint of the run that stopped is of no use (the one just read is).
+  std::filesystem::remove(checkpoint_temporary(checkpoint));
+  std::filesystem::remove(options_.output_dir / "summary.json");
+  summary_.resumed_at_steps.push_back(step_number_);
+  summary_.history_file = output_->history_file();
+  if (options_.log)
+    *options_.log << fmt::format("resuming from {}: phase '{}', step {}, time {:g}\n",
+                                 checkpoint.string(), summary_.phases[phase_index_].name,
+                                 step_number_, time_);
+}
+
+void Simulation::run() {
+  for (; phase_index_ < model_.spec.phases.size(); ++phase_index_) {
+    if (!phase_) begin_phase();  // (a resumed run is in the middle of one)
+    run_phase();
+    summary_.phases[phase_index_].status = "finished";
+    phase_.reset();
+    control_.reset();
+  }
+}
+
+void Simulation::begin_phase() {
+  const spec::Phase& spec = model_.spec.phases[phase_index_];
+  phase_ = std::make_unique<PhaseContext>(model_, spec);
+  control_ = std::make_unique<StepController>(step_control_settings(spec.time_step), spec.duration);
+  stepper_.start_phase();
+  for (auto& d : model_.points.phase_displacement) d.setZero();
+  summary_.phases[phase_index_].status = "running";
+  phase_started_ = Clock::now();
+  phase_wall_before_ = 0.0;
+}
+
+// The step loop of a phase: try the controller's step; retry a failed one smaller; stop the run
+// when that cannot go on; write and count a converged one.
+void Simulation::run_phase() {
+  while (!control_->finished()) {
+    const double t = control_->time(), dt = control_->trial_step();
+    const StepResult step = stepper_.advance(*phase_, t, dt);
+    output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
+    if (!step.converged) {
+      cut_back(step, t, dt);
+      continue;
+    }
+    check_lost_points(step, t + dt);
+    accept(step, dt);
+  }
+}
+
+void Simulation::cut_back(const StepResult& step, double t, double dt) {
+  const spec::Phase& spec = *phase_->spec;
+  ++summary_.cutbacks;
+  ++summary_.phases[phase_index_].cutbacks;
+  update_clocks();
+  if (!control_->failed(dt))
+    stop(
+        fmt::format("phase '{}': the step at time {:g} did not converge with the smallest "
+                    "allowed time step ({:g}): {}. Results up to time {:g} are in {}",
+                    spec.name, t, dt, step.newton.failure, time_, options_.output_dir.string()));
+  progress_.update(
+      fmt::format("phase {} | step {} | t {:.4g} | cut back to dt {:.3g}: {}", spec.name,
+                  step_number_ + 1, t, control_->next_step(), step.newton.failure),
+      true);
+}
+
+void Simulation::check_lost_points(const StepResult& step, double t) {
+  const spec::Phase& spec = *phase_->spec;
+  if (model_.points.size() == 0)
+    stop(
+        fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
+                    "up to time {:g} are in {}",
+                    spec.name, t, time_, options_.output_dir.string()));
+  if (step.lost.empty() || model_.spec.numerics.lost_points != spec::LostPointPolicy::Stop) return;
+  std::string where;
+  for (std::size_t k = 0; k < std::min<std::size_t>(step.lost.size(), 5); ++k)
+    where += fmt::format("\n  point {} would move to ({:.6g}, {:.6g}, {:.6g})", step.lost[k].first,
+                         step.lost[k].second.x(), step.lost[k].second.y(), step.lost[k].second.z());
+  stop(
+      fmt::format("phase '{}', time {:g}: {} material point(s) left the mesh (policy "
+                  "numerics.lost_points = stop):{}{}\nEnlarge the mesh or set "
+                  "lost_points: remove. Results up to time {:g} are in {}",
+                  spec.name, t, step.lost.size(), where, step.lost.size() > 5 ? "\n  ..." : "",
+                  time_, options_.output_dir.string()));
+}
+
+void Simulation::accept(const StepResult& step, double dt) {
+  const spec::Phase& spec = *phase_->spec;
+  const int iterations = step.newton.iterations;
+  control_->converged(dt, iterations);
+  time_ += dt;
+  done_duration_ += dt;
+  ++step_number_;
+  PhaseSummary& phase = summary_.phases[phase_index_];
+  ++summary_.steps;
+  ++phase.steps;
+  summary_.iterations += iterations;
+  phase.iterations += iterations;
+  summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
+  phase.max_iterations_in_a_step = std::max(phase.max_iterations_in_a_step, iterations);
+  summary_.residual_histories.push_back(step.newton.residuals);
+
+  const bool phase_done = control_->finished();
+  const int vtk_every = model_.spec.output.vtk_every;
+  const bool vtk = vtk_every > 0 && (step_number_ % vtk_every == 0 || phase_done);
+  output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk);
+  update_clocks();
+
+  double total_duration = 0.0;
+  for (const auto& p : model_.spec.phases) total_duration += p.duration;
+  const double done_here = done_duration_ - done_duration_before_;
+  const double eta =
+      done_here > 0 ? seconds_since(started_) * (total_duration - done_duration_) / done_here : 0;
+  progress_.update(
+      fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | "
+                  "r {:.2e} | ETA {}",
+                  spec.name, step_number_, control_->time(), spec.duration, dt, iterations,
+                  step.newton.residuals.back(), format_duration(eta)));
+  checkpoint_if_due(phase_done);
+}
+
+// After the step's output, so that the files a checkpoint records hold that step.
+void Simulation::checkpoint_if_due(bool phase_done) {
+  const spec::Checkpoint& schedule = model_.spec.output.checkpoint;
+  const int every_steps = options_.checkpoint_every.value_or(schedule.every_steps);
+  const double every_minutes = schedule.every_minutes;
+  if (every_steps <= 0 && every_minutes <= 0) return;  // checkpoints are off
+  const bool due = phase_done || (every_steps > 0 && step_number_ % every_steps == 0) ||
+                   (every_minutes > 0 && seconds_since(last_checkpoint_) >= 60 * every_minutes);
+  if (!due) return;
+  save(checkpoint_file(options_.output_dir));
+  last_checkpoint_ = Clock::now();
+}
+
+void Simulation::update_clocks() {
+  summary_.wall_seconds = wall_before_ + seconds_since(started_);
+  summary_.phases[phase_index_].wall_seconds = phase_wall_before_ + seconds_since(phase_started_);
+}
+
+void Simulation::stop(const std::string& message) {
+  summary_.phases[phase_index_].status = "stopped";
+  throw RunError(message);
+}
+
+void Simulation::finish(const std::string& stop_reason) {
+  progress_.finish();
+  summary_.status = stop_reason.empty() ? "finished" : "stopped";
+  summary_.time = time_;
+  summary_.reason = stop_reason.empty() ? "finished" : stop_reason;
+  summary_.wall_seconds = wall_before_ + seconds_since(started_);
+  summary_.lost_mass = model_.lost_mass;
+  summary_.lost_points = model_.lost_points;
+  if (output_) {
+    summary_.history_columns = output_->columns();
+    summary_.history_last = output_->last_values();
+    // Whatever stopped the run, the plots of what was finished are still drawn.
+    if (stop_reason.empty()) {
+      output_->plots();
+    } else {
+      try {
+        output_->plots();
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  write_summary_json(options_.output_dir / "summary.json", summary_);
+}
+
+}  // namespace geompm

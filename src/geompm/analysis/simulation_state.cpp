@@ -1,0 +1,103 @@
+// The saved state of a run (docs/checkpoint-format.md): one section per owner of persistent
+// state, each written and read by that owner, in this order. A section's reader checks that it
+// read every byte, so a layout that drifts from its writer is caught, not misread.
+#include <fmt/format.h>
+
+#include "geompm/analysis/simulation.hpp"
+#include "geompm/core/error.hpp"
+#include "geompm/io/checkpoint_file.hpp"
+
+namespace geompm {
+
+void Simulation::save(const std::filesystem::path& file) const {
+  CheckpointSections sections;
+  const auto section = [&sections](const char* name, auto&& write) {
+    ByteWriter out;
+    write(out);
+    sections.emplace_back(name, out.take());
+  };
+  section("run", [&](ByteWriter& out) {
+    out.put(static_cast<std::uint64_t>(phase_index_));
+    out.put(model_.spec.phases[phase_index_].name);
+    out.put(time_);
+    out.put(step_number_);
+    out.put(done_duration_);
+    out.put(control_->state().time);
+    out.put(control_->state().dt);
+  });
+  section("points", [&](ByteWriter& out) { model_.points.save(out); });
+  section("model", [&](ByteWriter& out) { model_.save_state(out); });
+  section("phase", [&](ByteWriter& out) { phase_->save(out); });
+  section("step_solver", [&](ByteWriter& out) {
+    out.put(stepper_.last_rate());
+    out.put(stepper_.pressure().last());
+  });
+  section("summary", [&](ByteWriter& out) {
+    // The wall times so far, this process's included.
+    RunSummary counted = summary_;
+    const auto now = Clock::now();
+    counted.wall_seconds = wall_before_ + std::chrono::duration<double>(now - started_).count();
+    counted.phases[phase_index_].wall_seconds =
+        phase_wall_before_ + std::chrono::duration<double>(now - phase_started_).count();
+    counted.save(out);
+  });
+  section("output", [&](ByteWriter& out) { output_->save(out); });
+
+  CheckpointWriteOptions write_options;
+  write_options.kill_half_way = kill_in_checkpoint_ > 0 && checkpoints_ + 1 == kill_in_checkpoint_;
+  write_checkpoint_file(file, options_.model_hash, sections, write_options);
+  ++checkpoints_;
+}
+
+void Simulation::load(const std::filesystem::path& file) {
+  const CheckpointContents contents = read_checkpoint_file(file, options_.model_hash);
+  if (contents.geompm_version != GEOMPM_VERSION && options_.log)
+    *options_.log << fmt::format("note: {} was written by geompm {}; this is geompm {}\n",
+                                 file.string(), contents.geompm_version, GEOMPM_VERSION);
+
+  ByteReader run = contents.section("run");
+  const auto phase = run.get<std::uint64_t>();
+  const auto phase_name = run.get<std::string>();
+  if (phase >= model_.spec.phases.size() || model_.spec.phases[phase].name != phase_name)
+    throw InputError(fmt::format("{}: written in phase {} '{}', which the model does not have",
+                                 run.context(), phase + 1, phase_name));
+  phase_index_ = static_cast<std::size_t>(phase);
+  const spec::Phase& spec = model_.spec.phases[phase_index_];
+  StepController::State control;
+  run.get(time_);
+  run.get(step_number_);
+  run.get(done_duration_);
+  run.get(control.time);
+  run.get(control.dt);
+  run.expect_end();
+
+  ByteReader points = contents.section("points");
+  model_.points.load(points);
+  ByteReader model = contents.section("model");
+  model_.load_state(model);
+  // The phase is rebuilt from the model, then given the state its steps had reached.
+  phase_ = std::make_unique<PhaseContext>(model_, spec);
+  ByteReader phase_state = contents.section("phase");
+  phase_->load(phase_state);
+  control_ = std::make_unique<StepController>(step_control_settings(spec.time_step), spec.duration);
+  control_->restore(control);
+
+  ByteReader step_solver = contents.section("step_solver");
+  stepper_.set_last_rate(step_solver.get<std::vector<double>>());
+  stepper_.pressure().set_last(step_solver.get<std::vector<double>>());
+  step_solver.expect_end();
+
+  ByteReader summary = contents.section("summary");
+  summary_.load(summary);
+  if (summary_.phases.size() != model_.spec.phases.size())
+    throw InputError(fmt::format("{}: {} phases counted, the model has {}", summary.context(),
+                                 summary_.phases.size(), model_.spec.phases.size()));
+  wall_before_ = summary_.wall_seconds;
+  phase_wall_before_ = summary_.phases[phase_index_].wall_seconds;
+  done_duration_before_ = done_duration_;
+
+  ByteReader output = contents.section("output");
+  output_ = std::make_unique<OutputWriter>(model_, options_.output_dir, output);
+}
+
+}  // namespace geompm

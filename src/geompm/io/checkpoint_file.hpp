@@ -1,0 +1,56 @@
+// The checkpoint file: a versioned binary container of named sections (docs/checkpoint-format.md).
+// It knows bytes only; what each section holds is written and read by the owner of that state
+// (analysis/simulation_state.cpp). Written atomically (a temporary file, flushed to disk, renamed
+// over the last checkpoint), so a run killed at any moment leaves the previous checkpoint or the
+// new one, never half of one; read with every check a damaged or foreign file needs.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geompm/core/byte_archive.hpp"
+
+namespace geompm {
+
+inline constexpr char checkpoint_magic[8] = {'G', 'E', 'O', 'M', 'P', 'M', 'C', 'K'};
+inline constexpr std::uint32_t checkpoint_format_version = 1;
+/// Magic, format version, body length and checksum come before the body.
+inline constexpr std::size_t checkpoint_header_bytes = 8 + 4 + 8 + 8;
+
+/// Named sections, in the order they are written.
+using CheckpointSections = std::vector<std::pair<std::string, std::string>>;
+
+struct CheckpointWriteOptions {
+  /// Test only: kill the process (SIGKILL) after half of the temporary file is written, as a
+  /// crash or a power cut in the middle of a checkpoint would.
+  bool kill_half_way = false;
+};
+
+/// The temporary file a checkpoint is written to before the rename: `file` + ".tmp".
+std::filesystem::path checkpoint_temporary(const std::filesystem::path& file);
+
+/// Writes the checkpoint atomically. Throws RunError if the file cannot be written (a full disk).
+void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
+                           const CheckpointSections& sections,
+                           const CheckpointWriteOptions& options = {});
+
+struct CheckpointContents {
+  std::string file;            // as given, for messages
+  std::string geompm_version;  // of the geompm that wrote it
+  std::uint64_t model_hash = 0;
+  CheckpointSections sections;
+
+  /// A reader of the section `name`; throws InputError if the checkpoint has none.
+  ByteReader section(const std::string& name) const;
+};
+
+/// Reads and checks a checkpoint: throws InputError naming the file and what is wrong when it is
+/// missing, truncated, not a checkpoint, of another format version, damaged (checksum) or written
+/// for a model whose text hashes otherwise than `model_hash`.
+CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
+                                        std::uint64_t model_hash);
+
+}  // namespace geompm

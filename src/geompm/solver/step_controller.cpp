@@ -1,0 +1,32 @@
+#include "geompm/solver/step_controller.hpp"
+
+#include <algorithm>
+
+namespace geompm {
+
+StepController::StepController(const StepControlSettings& settings, double duration)
+    : settings_(settings), duration_(duration), state_{0.0, settings.initial} {}
+
+// The relative tolerances below decide when the phase's end is reached and when a step is too
+// small, whatever round-off the sum of the steps carries.
+bool StepController::finished() const { return state_.time >= duration_ * (1.0 - 1e-12); }
+
+double StepController::trial_step() const {
+  const double remaining = duration_ - state_.time;
+  const double dt = std::min(state_.dt, remaining);
+  return remaining - dt < 0.01 * dt ? remaining : dt;  // no sliver of a last step
+}
+
+void StepController::converged(double dt, int iterations) {
+  state_.time += dt;
+  state_.dt = iterations <= settings_.easy_iterations
+                  ? std::min(dt * settings_.growth, settings_.max)
+                  : std::min(dt, settings_.max);
+}
+
+bool StepController::failed(double dt) {
+  state_.dt = dt * settings_.cutback;
+  return state_.dt >= settings_.min * (1.0 - 1e-12);
+}
+
+}  // namespace geompm
