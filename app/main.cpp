@@ -12,6 +12,8 @@
 #include <iostream>
 #include <iterator>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
@@ -62,6 +64,114 @@ int check_command(const std::string& model_file) {
   return 0;
 }
 
+struct MeshCommand {
+  std::vector<double> origin = {0, 0, 0}, size, refine;
+  double h = 0, h_refined = 0;
+  std::string cell = "tri3", output = "mesh.msh";
+};
+
+geompm::Vec3 vec3(const std::vector<double>& v) {
+  geompm::Vec3 x = geompm::Vec3::Zero();
+  for (std::size_t i = 0; i < v.size() && i < 3; ++i) x(i) = v[i];
+  return x;
+}
+
+int mesh_command(const MeshCommand& command) {
+  const auto type = geompm::parse_cell_type(command.cell);
+  if (!type)
+    throw geompm::InputError("--cell: expected tri3, tri6, quad4 or tet4, got '" + command.cell +
+                             "'");
+  const bool box = command.size.size() == 3;
+  std::optional<geompm::RefineBox> region;
+  if (!command.refine.empty()) {
+    const std::size_t half = command.refine.size() / 2;
+    if (command.refine.size() % 2 || (half != command.size.size()))
+      throw geompm::InputError("--refine: expected " + std::to_string(2 * command.size.size()) +
+                               " numbers (lower and upper corner)");
+    geompm::Vec3 lo = geompm::Vec3::Zero(), hi = geompm::Vec3::Zero();
+    for (std::size_t i = 0; i < half; ++i) {
+      lo(i) = command.refine[i];
+      hi(i) = command.refine[half + i];
+    }
+    region = std::make_pair(lo, hi);
+    if (!(command.h_refined > 0))
+      throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
+  }
+  try {
+    if (box)
+      geompm::write_gmsh_box(command.output, vec3(command.origin), vec3(command.size), command.h,
+                             *type, region, command.h_refined);
+    else
+      geompm::write_gmsh_rectangle(command.output, vec3(command.origin), vec3(command.size),
+                                   command.h, *type, region, command.h_refined);
+  } catch (const std::invalid_argument& e) {
+    throw geompm::InputError(std::string("geompm mesh: ") + e.what());
+  }
+  std::cout << "wrote " << command.output << "\n";
+  return 0;
+}
+
+CLI::App* add_run_command(CLI::App& app, RunCommand& options) {
+  auto* run = app.add_subcommand("run", "run an analysis");
+  run->add_option("model", options.model_file, "model file (YAML or JSON)")->required();
+  run->add_option("-o,--output", options.output,
+                  "output directory (default: <model name>_results)");
+  run->add_option("-t,--threads", options.threads, "number of threads (default: all cores)")
+      ->check(CLI::Range(1, 4096).description("a whole number >= 1"));
+  run->add_flag("-q,--quiet", options.quiet,
+                "no model description or progress line (the closing summary is still printed)");
+  run->add_flag("--resume", options.resume,
+                "continue the run in the output directory from its last checkpoint "
+                "(checkpoint.bin), with the same model file");
+  run->add_option("--checkpoint-every", options.checkpoint_every,
+                  "write a checkpoint every STEPS converged steps (0: not by steps; default: "
+                  "output.checkpoint.every_steps of the model, 100)")
+      ->type_name("STEPS")
+      ->check(CLI::Range(0, 1000000000).description("a whole number >= 0"));
+  return run;
+}
+
+CLI::App* add_plot_command(CLI::App& app, geompm::PlotRequest& request, std::string& png) {
+  auto* plot = app.add_subcommand("plot", "plot columns of a history CSV into a PNG");
+  plot->add_option("csv", request.csv, "history CSV file")->required();
+  plot->add_option("--x", request.x, "column for the horizontal axis")->default_val("time");
+  plot->add_option("--y", request.y, "column(s) for the vertical axis")->required();
+  plot->add_option("--x-scale", request.x_scale, "factor applied to x (e.g. -1)");
+  plot->add_option("--y-scale", request.y_scale, "factor applied to y (e.g. -1)");
+  plot->add_option("--title", request.title, "plot title");
+  plot->add_option("-o,--output", png, "PNG file to write")->default_val("plot.png");
+  return plot;
+}
+
+// Unstructured meshes through Gmsh, written as .msh for `mesh: {file: ...}` in a model.
+CLI::App* add_mesh_command(CLI::App& app, MeshCommand& options) {
+  auto* mesh = app.add_subcommand("mesh", "write an unstructured Gmsh mesh of a rectangle or box");
+  mesh->add_option("--origin", options.origin, "lower corner (2 or 3 numbers)")->expected(2, 3);
+  mesh->add_option("--size", options.size, "extent (2 numbers: rectangle, 3: box)")
+      ->required()
+      ->expected(2, 3);
+  mesh->add_option("--h", options.h, "cell size")->required()->check(CLI::PositiveNumber);
+  mesh->add_option("--refine", options.refine,
+                   "refinement box: lower and upper corner (4 or 6 numbers)")
+      ->expected(4, 6);
+  mesh->add_option("--h-refined", options.h_refined, "cell size inside the refinement box");
+  mesh->add_option("--cell", options.cell, "tri3, tri6, quad4 (2D) or tet4 (3D)")
+      ->default_val("tri3");
+  mesh->add_option("-o,--output", options.output, "the .msh file to write")
+      ->default_val("mesh.msh");
+  return mesh;
+}
+
+/// An unknown first word is named before CLI11 would complain about something else.
+bool known_command(const CLI::App& app, int argc, char** argv) {
+  if (argc <= 1 || argv[1][0] == '-') return true;
+  for (const auto* sub : app.get_subcommands({}))
+    if (sub->get_name() == argv[1]) return true;
+  std::cerr << "error: unknown command '" << argv[1]
+            << "'; the commands are: run, check, plot, mesh (see --help)\n";
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -69,65 +179,19 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("geompm ") + GEOMPM_VERSION);
   app.require_subcommand(1);
 
-  std::string model_file;
   RunCommand run_options;
-  auto* run = app.add_subcommand("run", "run an analysis");
-  run->add_option("model", run_options.model_file, "model file (YAML or JSON)")->required();
-  run->add_option("-o,--output", run_options.output,
-                  "output directory (default: <model name>_results)");
-  run->add_option("-t,--threads", run_options.threads, "number of threads (default: all cores)")
-      ->check(CLI::Range(1, 4096).description("a whole number >= 1"));
-  run->add_flag("-q,--quiet", run_options.quiet,
-                "no model description or progress line (the closing summary is still printed)");
-  run->add_flag("--resume", run_options.resume,
-                "continue the run in the output directory from its last checkpoint "
-                "(checkpoint.bin), with the same model file");
-  run->add_option("--checkpoint-every", run_options.checkpoint_every,
-                  "write a checkpoint every STEPS converged steps (0: not by steps; default: "
-                  "output.checkpoint.every_steps of the model, 100)")
-      ->type_name("STEPS")
-      ->check(CLI::Range(0, 1000000000).description("a whole number >= 0"));
-
+  auto* run = add_run_command(app, run_options);
+  std::string model_file;
   auto* check =
       app.add_subcommand("check", "validate a model and print a summary, without running");
   check->add_option("model", model_file, "model file")->required();
-
   geompm::PlotRequest plot_request;
   std::string png = "plot.png";
-  auto* plot = app.add_subcommand("plot", "plot columns of a history CSV into a PNG");
-  plot->add_option("csv", plot_request.csv, "history CSV file")->required();
-  plot->add_option("--x", plot_request.x, "column for the horizontal axis")->default_val("time");
-  plot->add_option("--y", plot_request.y, "column(s) for the vertical axis")->required();
-  plot->add_option("--x-scale", plot_request.x_scale, "factor applied to x (e.g. -1)");
-  plot->add_option("--y-scale", plot_request.y_scale, "factor applied to y (e.g. -1)");
-  plot->add_option("--title", plot_request.title, "plot title");
-  plot->add_option("-o,--output", png, "PNG file to write")->default_val("plot.png");
+  auto* plot = add_plot_command(app, plot_request, png);
+  MeshCommand mesh_options;
+  auto* mesh = add_mesh_command(app, mesh_options);
 
-  // Unstructured meshes through Gmsh, written as .msh for `mesh: {file: ...}` in a model.
-  std::vector<double> origin = {0, 0, 0}, size, refine;
-  double h = 0, h_refined = 0;
-  std::string cell = "tri3", msh = "mesh.msh";
-  auto* mesh = app.add_subcommand("mesh", "write an unstructured Gmsh mesh of a rectangle or box");
-  mesh->add_option("--origin", origin, "lower corner (2 or 3 numbers)")->expected(2, 3);
-  mesh->add_option("--size", size, "extent (2 numbers: rectangle, 3: box)")
-      ->required()
-      ->expected(2, 3);
-  mesh->add_option("--h", h, "cell size")->required()->check(CLI::PositiveNumber);
-  mesh->add_option("--refine", refine, "refinement box: lower and upper corner (4 or 6 numbers)")
-      ->expected(4, 6);
-  mesh->add_option("--h-refined", h_refined, "cell size inside the refinement box");
-  mesh->add_option("--cell", cell, "tri3, tri6, quad4 (2D) or tet4 (3D)")->default_val("tri3");
-  mesh->add_option("-o,--output", msh, "the .msh file to write")->default_val("mesh.msh");
-
-  if (argc > 1 && argv[1][0] != '-') {
-    bool known = false;
-    for (const auto* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
-    if (!known) {
-      std::cerr << "error: unknown command '" << argv[1]
-                << "'; the commands are: run, check, plot, mesh (see --help)\n";
-      return 1;
-    }
-  }
+  if (!known_command(app, argc, argv)) return 1;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -137,43 +201,7 @@ int main(int argc, char** argv) {
   try {
     if (*run) return run_command(run_options);
     if (*check) return check_command(model_file);
-    if (*mesh) {
-      const auto type = geompm::parse_cell_type(cell);
-      if (!type)
-        throw geompm::InputError("--cell: expected tri3, tri6, quad4 or tet4, got '" + cell + "'");
-      const bool box = size.size() == 3;
-      auto vec = [](const std::vector<double>& v, std::size_t offset) {
-        geompm::Vec3 x = geompm::Vec3::Zero();
-        for (std::size_t i = 0; i + offset < v.size() && i < 3; ++i) x(i) = v[i + offset];
-        return x;
-      };
-      std::optional<geompm::RefineBox> region;
-      if (!refine.empty()) {
-        const std::size_t half = refine.size() / 2;
-        if (refine.size() % 2 || (half != size.size()))
-          throw geompm::InputError("--refine: expected " + std::to_string(2 * size.size()) +
-                                   " numbers (lower and upper corner)");
-        geompm::Vec3 lo = geompm::Vec3::Zero(), hi = geompm::Vec3::Zero();
-        for (std::size_t i = 0; i < half; ++i) {
-          lo(i) = refine[i];
-          hi(i) = refine[half + i];
-        }
-        region = std::make_pair(lo, hi);
-        if (!(h_refined > 0))
-          throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
-      }
-      try {
-        if (box)
-          geompm::write_gmsh_box(msh, vec(origin, 0), vec(size, 0), h, *type, region, h_refined);
-        else
-          geompm::write_gmsh_rectangle(msh, vec(origin, 0), vec(size, 0), h, *type, region,
-                                       h_refined);
-      } catch (const std::invalid_argument& e) {
-        throw geompm::InputError(std::string("geompm mesh: ") + e.what());
-      }
-      std::cout << "wrote " << msh << "\n";
-      return 0;
-    }
+    if (*mesh) return mesh_command(mesh_options);
     if (*plot) {
       geompm::plot_history(plot_request, png);
       std::cout << "wrote " << png << "\n";

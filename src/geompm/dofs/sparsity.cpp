@@ -54,6 +54,7 @@ SparseMatrix SparsityBuilder::build() {
   }
   SparseMatrix pattern(n_free, n_free);
   pattern.resizeNonZeros(static_cast<Index>(inner.size()));
+  // Returned by move (Eigen's copy would copy every entry once more).
   std::copy(outer.begin(), outer.end(), pattern.outerIndexPtr());
   std::copy(inner.begin(), inner.end(), pattern.innerIndexPtr());
   std::fill(pattern.valuePtr(), pattern.valuePtr() + inner.size(), 0.0);

@@ -13,7 +13,8 @@ void StepSystem::build_pattern() {
   dofs_.number_free();
   SparsityBuilder pattern(dofs_);
   for (const auto& c : contributions_) c->declare_couplings(pattern);
-  tangent_ = pattern.build();
+  SparseMatrix built = pattern.build();
+  tangent_.swap(built);  // Eigen's assignment would copy every entry
   for (const auto& c : contributions_) c->attach(tangent_);
 }
 
