@@ -3,7 +3,7 @@
 // program's JSON output by bench/make_performance_doc.py).
 //
 //   map              phase 1: GridSystem::initialise + external_force
-//   constraints      fixities -> constrained dofs, GridSystem::set_constraints (pattern, scatter)
+//   constraints      fixities -> constrained dofs, StepSystem::build_pattern (numbering, pattern, scatter maps)
 //   internal_force   one Newton iteration's non-solve work: stress update, f_int, tangent
 //                    assembly; on 1 thread (the per-core rate) and on every core
 //   analyze          UMFPACK symbolic analysis (once per step)

@@ -312,7 +312,7 @@ def main():
 
     # --- non-solve rate ----------------------------------------------------------------------
     w("## Non-solve work of one Newton iteration\n")
-    w("Stress update + internal force + tangent assembly (`GridSystem::internal_force` with the "
+    w("Stress update + internal force + tangent assembly (the step system's evaluation with the "
       "tangent), in material points per second.\n")
     w("| | " + " | ".join(f"{c}x{c}" for c in sizes) + " |")
     w("|---" * (len(sizes) + 1) + "|")

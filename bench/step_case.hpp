@@ -64,7 +64,7 @@ class StepCase {
   /// external force.
   void map();
   /// Constrained dofs from the phase's fixities, as StepSolver::advance does, then the free
-  /// numbering, the tangent's pattern and the scatter maps (GridSystem::set_constraints).
+  /// numbering, the tangent's pattern and the scatter maps (StepSystem::build_pattern).
   void constrain();
   /// One Newton iteration's non-solve work: stress update, internal force, tangent assembly.
   /// Its displacement increment is a smooth settlement (du_y = -1e-4 y), so the stress update
