@@ -3,8 +3,9 @@
 // program's JSON output by bench/make_performance_doc.py).
 //
 //   map              phase 1: GridSystem::initialise + external_force
-//   constraints      fixities -> constrained dofs, StepSystem::build_pattern (numbering, pattern, scatter maps)
-//   internal_force   one Newton iteration's non-solve work: stress update, f_int, tangent
+//   constraints      fixities -> constrained dofs, StepSystem::build_pattern (numbering, pattern,
+//   scatter maps) internal_force   one Newton iteration's non-solve work: stress update, f_int,
+//   tangent
 //                    assembly; on 1 thread (the per-core rate) and on every core
 //   analyze          UMFPACK symbolic analysis (once per step)
 //   factorize_solve  UMFPACK numeric factorisation + one solve (once per Newton iteration)
