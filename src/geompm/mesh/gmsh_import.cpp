@@ -222,6 +222,12 @@ Mesh read_open_model(const std::string& path, int dimension) {
 
 }  // namespace
 
+Mesh mesh_from_gmsh_model(const std::string& what, int dimension) {
+  Mesh mesh = read_open_model(what, dimension);
+  validate_mesh(mesh, what);
+  return mesh;
+}
+
 Mesh read_gmsh_mesh(const std::string& path, int dimension) {
   const SourceLocation where{path, "", 0};
   if (dimension != 2 && dimension != 3)

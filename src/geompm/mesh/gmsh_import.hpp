@@ -14,4 +14,9 @@ namespace geompm {
 /// a mesh, mixed cell types, unsupported cell type, no cells of that dimension).
 Mesh read_gmsh_mesh(const std::string& path, int dimension);
 
+/// The cells of the model open in the caller's GmshSession (one just meshed through the API, as
+/// the built-in structure shapes are), read and checked as read_gmsh_mesh reads a file; `what`
+/// names it in errors.
+Mesh mesh_from_gmsh_model(const std::string& what, int dimension);
+
 }  // namespace geompm

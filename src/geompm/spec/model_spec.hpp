@@ -142,6 +142,43 @@ struct PointSetLoad {
   SourceLocation source;
 };
 
+/// A built-in structure shape (docs/user-guide.md, "structures"), meshed when the model is built:
+/// its kind, its dimensions by name, where it is placed and how finely it is meshed.
+struct StructureShape {
+  std::string kind;                          // pipe | tbar | spudcan | plate | cone | footing
+  std::map<std::string, double> dimensions;  // diameter, thickness, length, tip_angle, ...
+  Vec3 position = Vec3::Zero();  // its anchor: the tip (spudcan, plate, cone), the centre of the
+                                 // base (footing) or of the circle (pipe, tbar)
+  double cell_size = 0.0;        // about this size; 0: a tenth of the smallest dimension
+  std::optional<CellType> cell;  // tri3, tri6, quad4 (2D), tet4 (3D); default tri3 / tet4
+  SourceLocation source;
+};
+
+/// A structure in the soil (docs/theory.md §17): a finite-element mesh of its own, from a shape
+/// or a Gmsh file, rigid (one rigid-body motion); its mass from exactly one of density, mass or
+/// weight (per unit thickness in plane strain, per radian in axisymmetry).
+struct Structure {
+  std::string name;
+  std::optional<StructureShape> shape;  // either a built-in shape ...
+  std::string mesh_file;                // ... or a Gmsh .msh file (absolute path)
+  bool rigid = true;
+  std::optional<double> density, mass, weight;
+  std::optional<Vec3> reference_point;  // of its rotation; default: the centroid
+  SourceLocation source;
+};
+
+/// How a phase drives a structure, per component of its rigid-body motion: translations of the
+/// reference point (0, 1, 2: x, y, z) and rotations about it (3, 4, 5: about x, y, z; in 2D
+/// only 5). A component with a motion is prescribed (its displacement since the phase start or
+/// its velocity); the others are free, loaded by the given force or moment (and self-weight).
+struct StructureDrive {
+  std::string structure;
+  bool velocity = false;              // motion components are velocities (angular velocities)
+  std::array<std::string, 6> motion;  // expressions of t; "" = free
+  std::array<std::string, 6> load;    // force, moment: expressions of t; "" = none
+  SourceLocation source;
+};
+
 struct Gravity {
   Vec3 acceleration = Vec3::Zero();
   bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
@@ -202,6 +239,7 @@ struct Phase {
   std::vector<GridMotion> grid_motions;
   std::vector<RigidFooting> footings;
   std::vector<PointSetLoad> loads;
+  std::vector<StructureDrive> structure_drives;  // structures not listed: free
   SourceLocation source;
 };
 
@@ -213,6 +251,7 @@ struct History {
   std::string boundary;   // reaction on a boundary or node set; displacement of its grid motion
   std::string point_set;  // reaction, displacement, velocity, position, load of a point set
   std::string footing;    // reaction and displacement of a rigid footing
+  std::string structure;  // reaction, moment, displacement, rotation, position of a structure
   int component = -1;     // 0, 1, 2; -1 for scalars
   SourceLocation source;
 };
@@ -279,6 +318,7 @@ struct Model {
   std::vector<Body> bodies;
   std::vector<PointSet> point_sets;
   std::vector<NodeSet> node_sets;
+  std::vector<Structure> structures;
   std::vector<Phase> phases;
   Output output;
   Numerics numerics;
