@@ -38,6 +38,7 @@ struct SystemForces {
 struct Reactions {
   std::map<int, Vec3> point_sets;          // point-set bit -> force its prescribed motion exerts
   std::map<std::string, Vec3> structures;  // rigid footing -> force it exerts on the soil
+  std::map<std::string, Vec3> contacts;    // structure -> force the soil exerts on it by contact
 };
 
 class Contribution {

@@ -1,0 +1,46 @@
+// The contact conditions of one contact segment as equations that Newton can solve
+// (docs/theory.md §18): the Karush-Kuhn-Tucker conditions of the normal contact (no penetration,
+// no tension, a pressure only where touching) and the tangential law (smooth; rough, i.e. bonded;
+// adhesion-limited; Coulomb friction with an optional cap), each written as a semi-smooth
+// complementarity function (Alart & Curnier 1991). Their roots are exactly the conditions, so the
+// scale c that makes the multipliers lengths changes the path of the iterations, never the result.
+//
+// The unknowns of a segment are its multipliers in length units, l_n and l_t: the contact
+// pressure is c l_n and the shear c l_t. Its kinematics are the mean penetration p (> 0: the
+// structure is inside the soil) and the mean slip s (the structure's tangential displacement
+// relative to the soil's) over the segment, both linear in the step's displacements.
+#pragma once
+
+#include <limits>
+
+namespace geompm {
+
+enum class TangentialContact { Smooth, Rough, Adhesion, Friction };
+
+/// What the contact allows along its surface.
+struct ContactLaw {
+  TangentialContact tangential = TangentialContact::Smooth;
+  double adhesion = 0.0;  // Adhesion: the largest shear stress, a pressure
+  double friction = 0.0;  // Friction: Coulomb's mu
+  double cap = std::numeric_limits<double>::infinity();  // Friction: the largest shear stress
+};
+
+enum class ContactState { Open, Stick, Slip };
+
+/// The residuals of a segment's two equations (length units) and their derivatives with respect
+/// to (p, s, l_n, l_t). The normal equation is p = 0 where the segment touches (l_n + p > 0) and
+/// l_n = 0 where it is open; the tangential one is s = 0 where it sticks and l_t = +-b (the
+/// shear bound over c) where it slips, l_t = 0 where open or smooth.
+struct ContactEquations {
+  double normal = 0.0, tangential = 0.0;
+  double normal_d[4] = {0, 0, 0, 0};
+  double tangential_d[4] = {0, 0, 0, 0};
+  ContactState state = ContactState::Open;
+};
+
+/// The equations at (p, s, l_n, l_t); `scale` is c (pressure per unit length), which converts the
+/// law's stresses into the multipliers' length units.
+ContactEquations contact_equations(const ContactLaw& law, double scale, double p, double s,
+                                   double l_n, double l_t);
+
+}  // namespace geompm

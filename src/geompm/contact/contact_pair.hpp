@@ -1,0 +1,43 @@
+// A contact pair (docs/theory.md §18): a structure's surface against the soil's level set (the
+// points of some bodies), with its tangential law. It lives for the whole analysis and carries
+// from step to step what the next step starts from and what the output shows: each segment's
+// multipliers (the contact pressure and shear over the scale c) and its state.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geompm/contact/contact_law.hpp"
+#include "geompm/core/types.hpp"
+
+namespace geompm {
+
+class ByteWriter;
+class ByteReader;
+
+struct ContactPair {
+  std::string name;     // the structure's name
+  Index structure = 0;  // index into the model's structures
+  /// Per body index: 1 if its points are the soil the structure touches (empty: all bodies).
+  std::vector<char> bodies;
+  ContactLaw law;
+  /// Multiplies the automatic scale c = E / h (tests only: the results do not depend on it).
+  double scale_factor = 1.0;
+
+  /// Per contact segment (contact_segments' numbering), at the last converged step: the
+  /// multipliers (length units: normal, then the tangential ones), the contact pressure and shear
+  /// (stresses; shear along the segment's first tangent in 2D, its size in 3D), the state and
+  /// whether the segment lay in the step's active cells.
+  std::vector<std::array<double, 3>> multipliers;
+  std::vector<double> pressure, shear;
+  std::vector<ContactState> state;
+  std::vector<char> in_grid;
+  /// The force the soil exerts on the structure through the contact, and its moment about the
+  /// origin (z only in 2D), at the last converged step.
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
+};
+
+}  // namespace geompm

@@ -1,0 +1,225 @@
+#include "geompm/contact/level_set_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/element.hpp"
+
+namespace geompm {
+
+namespace {
+
+// The shape values of mesh cell c at its reference coordinates xi (nodes_per_cell entries).
+void cell_shape(const Mesh& mesh, const Vec3& xi, double* N) {
+  dispatch_cell_type(mesh.cell_type, [&](auto e) {
+    using E = decltype(e);
+    const auto values = E::shape(xi.template head<E::dim>());
+    for (int a = 0; a < E::nodes; ++a) N[a] = values(a);
+  });
+}
+
+double cell_size(const Mesh& mesh, Index cell) {
+  return std::pow(cell_measure(mesh, cell, false), 1.0 / mesh.dim());
+}
+
+}  // namespace
+
+LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& points,
+                                 const PointLocator& locator, const Structure& structure,
+                                 ContactPair& pair, double modulus, DofMap& dofs)
+    : grid_(grid),
+      locator_(locator),
+      structure_(structure),
+      level_set_(grid, points, pair.bodies),
+      dofs_(dofs),
+      pair_(pair),
+      dim_(grid.dim()),
+      modulus_(modulus) {
+  tangents_ = pair.law.tangential == TangentialContact::Smooth ? 0 : dim_ - 1;
+  // Segments about a cell long: the cell where a facet's centre lies, or the structure's own
+  // facet where it lies outside the mesh (it cannot touch the soil there).
+  all_ = contact_segments(structure.mesh(), [&](const Vec3& x) {
+    return cell_size_at(locator, x, std::numeric_limits<double>::infinity());
+  });
+  if (pair_.multipliers.size() != all_.size()) {
+    pair_.multipliers.assign(all_.size(), {0.0, 0.0, 0.0});
+    pair_.pressure.assign(all_.size(), 0.0);
+    pair_.shear.assign(all_.size(), 0.0);
+    pair_.state.assign(all_.size(), ContactState::Open);
+    pair_.in_grid.assign(all_.size(), 0);
+  }
+  for (std::size_t s = 0; s < all_.size(); ++s) {
+    Kinematics k;
+    if (build_kinematics(all_[s], static_cast<Index>(s), k)) segments_.push_back(std::move(k));
+  }
+  field_ = dofs.add_field("contact:" + structure.name(), FieldKind::Other,
+                          static_cast<Index>(segments_.size()), 1 + tangents_);
+  state_.assign(segments_.size(), ContactState::Open);
+}
+
+bool LevelSetContact::build_kinematics(const ContactSegment& segment, Index index,
+                                       Kinematics& k) const {
+  // Eq. 18.3: p = sum_q w_q [d_q + n . (u_s(x_q) - sum_a N_a(x_q) u_a)] / A, the same with a
+  // tangent for the slip; d_q = phi / max(|grad phi|, 1 / (2 h)) the level set's depth (eq. 18.2).
+  const Mesh& mesh = grid_.mesh();
+  const int u = dofs_.find("displacement");
+  std::vector<std::pair<Index, std::array<double, 3>>> terms;
+  std::vector<DofWeight> weights;
+  double N[27];
+  Index hint = -1;
+  double h = 0.0;
+  for (const ContactGaussPoint& q : segment.points) {
+    const auto where = locator_.locate(q.x, hint);
+    if (!where) return false;
+    hint = where->cell;
+    const auto nodes = mesh.cell_nodes(where->cell);
+    for (Index node : nodes)
+      if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
+    h = cell_size(mesh, where->cell);
+    const double phi = level_set_.value(where->cell, where->xi);
+    const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
+    const double w = q.weight / segment.measure;
+    k.p0 += w * phi / std::max(gradient.norm(), 0.5 / h);
+    const auto along = [&](const Vec3& c) {
+      return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
+                                   w * segment.tangents[1].dot(c)};
+    };
+    cell_shape(mesh, where->xi, N);
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int i = 0; i < dim_; ++i)
+        terms.push_back({dofs_.dof(u, grid_.node_to_active()[nodes[a]], i),
+                         along(-N[a] * Vec3::Unit(i))});
+    structure_.displacement_weights(dofs_, q.x, segment.structure_cell, weights);
+    for (const DofWeight& dw : weights) terms.push_back({dw.dof, along(dw.coefficient)});
+  }
+  std::sort(terms.begin(), terms.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [dof, c] : terms) {
+    if (!k.dofs.empty() && k.dofs.back() == dof) {
+      k.dp.back() += c[0];
+      k.ds.back()[0] += c[1];
+      k.ds.back()[1] += c[2];
+      continue;
+    }
+    k.dofs.push_back(dof);
+    k.dp.push_back(c[0]);
+    k.ds.push_back({c[1], c[2]});
+  }
+  k.segment = index;
+  k.measure = segment.measure;
+  k.scale = pair_.scale_factor * modulus_ / h;  // c = E / h (eq. 18.8)
+  return true;
+}
+
+double LevelSetContact::multiplier(const Vector& du, std::size_t k, int component) const {
+  // The unknowns are the multipliers' changes over the step (eq. 18.9).
+  return pair_.multipliers[segments_[k].segment][component] +
+         du(dofs_.dof(field_, static_cast<Index>(k), component));
+}
+
+void LevelSetContact::declare_couplings(SparsityBuilder& pattern) const {
+  std::vector<Index> block;
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    for (int c = 0; c <= tangents_; ++c) block.push_back(dofs_.dof(field_, Index(k), c));
+    const std::size_t own = block.size();
+    for (Index dof : segments_[k].dofs) {
+      block.resize(own);
+      block.push_back(dof);
+      pattern.couple_unknowns(block);
+    }
+    block.clear();
+  }
+}
+
+bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) {
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    const Kinematics& s = segments_[k];
+    double p = s.p0, slip[2] = {0.0, 0.0};
+    for (std::size_t j = 0; j < s.dofs.size(); ++j) {
+      const double v = du(s.dofs[j]);
+      p += s.dp[j] * v;
+      slip[0] += s.ds[j][0] * v;
+      slip[1] += s.ds[j][1] * v;
+    }
+    const double l_n = multiplier(du, k, 0);
+    const Index n_dof = dofs_.dof(field_, Index(k), 0);
+    const double cA = s.scale * s.measure;
+    // The normal equation, then one tangential equation per tangent (eq. 18.4-18.7; in 3D each
+    // tangent on its own).
+    ContactEquations e[2];
+    double l_t[2] = {0.0, 0.0};
+    for (int t = 0; t < std::max(tangents_, 1); ++t) {
+      if (t < tangents_) l_t[t] = multiplier(du, k, 1 + t);
+      e[t] = contact_equations(pair_.law, s.scale, p, slip[t], l_n, l_t[t]);
+    }
+    state_[k] = e[0].state;
+    forces.internal(n_dof) += cA * e[0].normal;
+    for (std::size_t j = 0; j < s.dofs.size(); ++j)
+      forces.internal(s.dofs[j]) +=
+          cA * (l_n * s.dp[j] + l_t[0] * s.ds[j][0] + l_t[1] * s.ds[j][1]);
+    for (int t = 0; t < tangents_; ++t)
+      forces.internal(dofs_.dof(field_, Index(k), 1 + t)) += cA * e[t].tangential;
+    if (!tangent) continue;
+    const auto put = [&](Index row, Index col, double v) {
+      if (v != 0.0) add_to_tangent(*tangent, dofs_, row, col, v);
+    };
+    for (std::size_t j = 0; j < s.dofs.size(); ++j) {
+      put(s.dofs[j], n_dof, cA * s.dp[j]);
+      put(n_dof, s.dofs[j], cA * e[0].normal_d[0] * s.dp[j]);
+    }
+    put(n_dof, n_dof, cA * e[0].normal_d[2]);
+    for (int t = 0; t < tangents_; ++t) {
+      const Index t_dof = dofs_.dof(field_, Index(k), 1 + t);
+      const ContactEquations& et = e[t];
+      for (std::size_t j = 0; j < s.dofs.size(); ++j) {
+        put(s.dofs[j], t_dof, cA * s.ds[j][t]);
+        put(t_dof, s.dofs[j], cA * (et.tangential_d[0] * s.dp[j] + et.tangential_d[1] * s.ds[j][t]));
+      }
+      put(t_dof, n_dof, cA * et.tangential_d[2]);
+      put(t_dof, t_dof, cA * et.tangential_d[3]);
+    }
+  }
+  return true;
+}
+
+void LevelSetContact::report(const Vector& du, Reactions& reactions) {
+  // The soil pushes the structure out along -n and against its slip along -t (eq. 18.10).
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  converged_.assign(segments_.size(), {0.0, 0.0, 0.0});
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    const Kinematics& s = segments_[k];
+    const ContactSegment& segment = all_[s.segment];
+    for (int c = 0; c <= tangents_; ++c) converged_[k][c] = multiplier(du, k, c);
+    Vec3 traction = -s.scale * converged_[k][0] * segment.normal;
+    for (int t = 0; t < tangents_; ++t)
+      traction -= s.scale * converged_[k][1 + t] * segment.tangents[t];
+    for (const ContactGaussPoint& q : segment.points) {
+      force += q.weight * traction;
+      moment += q.x.cross(q.weight * traction);
+    }
+  }
+  pair_.force = force;
+  pair_.moment = moment;
+  reactions.contacts[pair_.name] = force;
+}
+
+void LevelSetContact::commit() {
+  std::fill(pair_.in_grid.begin(), pair_.in_grid.end(), 0);
+  for (auto& m : pair_.multipliers) m = {0.0, 0.0, 0.0};
+  std::fill(pair_.pressure.begin(), pair_.pressure.end(), 0.0);
+  std::fill(pair_.shear.begin(), pair_.shear.end(), 0.0);
+  std::fill(pair_.state.begin(), pair_.state.end(), ContactState::Open);
+  for (std::size_t k = 0; k < segments_.size() && k < converged_.size(); ++k) {
+    const Index s = segments_[k].segment;
+    pair_.in_grid[s] = 1;
+    pair_.multipliers[s] = converged_[k];
+    pair_.pressure[s] = segments_[k].scale * converged_[k][0];
+    pair_.shear[s] = segments_[k].scale *
+                     std::hypot(converged_[k][1], tangents_ > 1 ? converged_[k][2] : 0.0) *
+                     (tangents_ == 1 && converged_[k][1] < 0.0 ? -1.0 : 1.0);
+    pair_.state[s] = state_[k];
+  }
+}
+
+}  // namespace geompm

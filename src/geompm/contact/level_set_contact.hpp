@@ -1,0 +1,72 @@
+// The contact of a structure with the soil in one step (seed §3.7, after Andreykiv et al. 2011;
+// docs/theory.md §18): the structure's surface is embedded in the background grid, and a segment
+// of it penetrates the soil where the soil's density-based level set is positive there. Within
+// the step the penetration and the slip of each segment are linear in the step's unknowns: the
+// structure's motion at its Gauss points against the grid's displacement there. Each segment has
+// Lagrange multipliers, unknowns of the step (field "contact:<structure>"), and the contact
+// conditions are semi-smooth equations in them (contact/contact_law.hpp), solved by the same
+// Newton iterations as the rest: no penalty to choose, and the scale c = E / h that makes the
+// multipliers lengths changes the iterations, not the result.
+#pragma once
+
+#include <vector>
+
+#include "geompm/contact/contact_pair.hpp"
+#include "geompm/contact/contact_surface.hpp"
+#include "geompm/levelset/level_set.hpp"
+#include "geompm/physics/contribution.hpp"
+#include "geompm/structures/structure.hpp"
+
+namespace geompm {
+
+class LevelSetContact final : public Contribution {
+ public:
+  /// Adds the pair's multipliers to `dofs` (after the structure's and the grid's fields).
+  /// `modulus`: the soil's Young's modulus for the scale c = modulus / h.
+  LevelSetContact(const GridSystem& grid, const MaterialPoints& points,
+                  const PointLocator& locator, const Structure& structure, ContactPair& pair,
+                  double modulus, DofMap& dofs);
+  const char* name() const override { return "contact"; }
+
+  void declare_couplings(SparsityBuilder& pattern) const override;
+  bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
+  /// The contact force on the structure into reactions.contacts.
+  void report(const Vector& du, Reactions& reactions) override;
+  /// The pair keeps the converged multipliers, pressures, shears and states.
+  void commit() override;
+
+  /// The number of segments in the step's grid (those with multipliers).
+  Index active_segments() const { return static_cast<Index>(segments_.size()); }
+
+ private:
+  /// A segment's mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum ds_tj du_j, over
+  /// the unknowns j of the structure and of the grid nodes around its Gauss points (eq. 18.3).
+  struct Kinematics {
+    Index segment = -1;  // in contact_segments' numbering
+    double measure = 0.0, scale = 0.0;
+    double p0 = 0.0;
+    std::vector<Index> dofs;
+    std::vector<double> dp;
+    std::vector<std::array<double, 2>> ds;
+  };
+  bool build_kinematics(const ContactSegment& segment, Index index, Kinematics& k) const;
+  double multiplier(const Vector& du, std::size_t k, int component) const;
+
+  const GridSystem& grid_;
+  const PointLocator& locator_;
+  const Structure& structure_;
+  const LevelSet level_set_;
+  const DofMap& dofs_;
+  ContactPair& pair_;
+  int dim_ = 2;
+  int tangents_ = 0;  // tangential multipliers per segment: 0 (smooth), 1 (2D), 2 (3D)
+  double modulus_ = 0.0;
+  std::vector<ContactSegment> all_;  // every segment of the structure's surface
+  std::vector<Kinematics> segments_;  // those in the step's grid, with multipliers
+  int field_ = -1;
+  // At the last evaluation, per segment with multipliers: the law's state.
+  std::vector<ContactState> state_;
+  std::vector<std::array<double, 3>> converged_;  // multipliers at the last report()
+};
+
+}  // namespace geompm
