@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "geompm/core/tensor.hpp"
+#include "geompm/structures/rigid_structure.hpp"
 
 namespace geompm {
 
@@ -35,6 +36,34 @@ double strain_energy(const Model& model) {
   return e;
 }
 
+namespace {
+
+// A structure's history (docs/theory.md §17.5): what its drive exerts (reaction, moment) at the
+// last converged step, its motion since the start of the analysis or of the phase, where its
+// reference point is. Reactions are 0 before the first step.
+double structure_value(const Model& model, const spec::History& h, const StepResult* step) {
+  for (const auto& structure : model.structures) {
+    if (structure->name() != h.structure) continue;
+    const auto* rigid = dynamic_cast<const RigidStructure*>(structure.get());
+    if (!rigid) return std::numeric_limits<double>::quiet_NaN();
+    const int c = h.component;
+    if (h.quantity == "reaction" || h.quantity == "moment") {
+      if (!step) return 0.0;
+      const auto it = step->structure_forces.find(h.structure);
+      if (it == step->structure_forces.end()) return 0.0;
+      return (h.quantity == "reaction" ? it->second.force : it->second.moment)(c);
+    }
+    if (h.quantity == "displacement") return rigid->displacement()(c);
+    if (h.quantity == "rotation") return rigid->rotation()(c);
+    if (h.quantity == "phase_displacement") return rigid->phase_displacement()(c);
+    if (h.quantity == "phase_rotation") return rigid->phase_rotation()(c);
+    if (h.quantity == "position") return rigid->reference_point()(c);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 double HistoryRecorder::point_set_mean(const Model& model, int set, int component,
                                        const std::vector<Vec3>& field) const {
   // Mass-weighted mean over the set (volume-weighted for a weightless set).
@@ -53,7 +82,9 @@ std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
   std::vector<double> v = {0.0, 0.0};
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
-    if (h.quantity == "displacement" && (!h.boundary.empty() || !h.footing.empty()))
+    if (!h.structure.empty())
+      v.push_back(structure_value(model, h, nullptr));
+    else if (h.quantity == "displacement" && (!h.boundary.empty() || !h.footing.empty()))
       v.push_back(0.0);
     else if (h.quantity == "displacement")
       v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.displacement));
@@ -79,7 +110,9 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
     double value = 0.0;
-    if (h.quantity == "reaction") {
+    if (!h.structure.empty()) {
+      value = structure_value(model, h, &step);
+    } else if (h.quantity == "reaction") {
       // Sum of the reactions at the constrained unknowns of the boundary or driven set.
       const DofMap& dofs = *step.dofs;
       const int u = dofs.find("displacement");

@@ -17,6 +17,7 @@
 #include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/seeding.hpp"
+#include "geompm/structures/structure_builder.hpp"
 
 namespace geompm {
 
@@ -340,6 +341,8 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
+  for (const spec::Structure& structure : spec.structures)
+    model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
   // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §10), before any step.
   apply_k0_procedure(*model);
   return model;
@@ -389,6 +392,13 @@ std::string describe_model(const Model& model) {
     for (Index p = 0; p < model.points.size(); ++p) count += (model.points.sets[p] >> k) & 1u;
     out += fmt::format("point set  {}: {} points\n", model.point_set_names[k], count);
   }
+  for (const auto& structure : model.structures)
+    out += fmt::format(
+        "structure  {}: {} {} cells, {} surface facets, {} {:.6g}{}\n", structure->name(),
+        structure->mesh().num_cells(), to_string(structure->mesh().mesh().cell_type),
+        structure->mesh().surface().size(),
+        spec.kinematics == Kinematics::PlaneStrain ? "area" : "volume", structure->mesh().measure(),
+        spec.kinematics == Kinematics::Axisymmetric ? " per radian" : "");
   for (const auto& phase : spec.phases)
     out += fmt::format(
         "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}{}\n", phase.name, phase.duration,

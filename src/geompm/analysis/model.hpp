@@ -13,6 +13,7 @@
 #include "geompm/mesh/point_locator.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/spec/model_spec.hpp"
+#include "geompm/structures/structure.hpp"
 
 namespace geompm {
 
@@ -27,6 +28,9 @@ struct Model {
   std::vector<std::unique_ptr<Material>> materials;  // in the order of spec.materials
   MaterialPoints points;
   std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
+  /// The structures (docs/theory.md §17), in the order of spec.structures; they move with the
+  /// steps that converge (their state is saved by Structure::save).
+  std::vector<std::unique_ptr<Structure>> structures;
   /// Displacement prescribed so far on the nodes of each driven boundary or node set (grid
   /// motions, summed over the phases; components never driven stay 0), for histories.
   std::map<std::string, Vec3> grid_displacement;

@@ -27,6 +27,12 @@ PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(
     for (int d = 0; d < 3; ++d) load.components[d] = Expression(l.components[d]);
     loads.push_back(std::move(load));
   }
+  for (const auto& structure : model.structures) {
+    structure_drives.emplace_back(model.spec.kinematics);
+    for (const spec::StructureDrive& d : phase.structure_drives)
+      if (d.structure == structure->name())
+        structure_drives.back() = StructureDrive(d, model.spec.kinematics);
+  }
 }
 
 Vec3 PhaseContext::gravity(double t) const {

@@ -11,6 +11,7 @@
 #include "geompm/boundary/grid_motions.hpp"
 #include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/core/expression.hpp"
+#include "geompm/structures/structure_drive.hpp"
 
 namespace geompm {
 
@@ -32,6 +33,8 @@ struct PhaseContext {
   std::vector<Motion> motions;         // `done` is advanced by the step solver on convergence
   std::vector<RigidFooting> footings;  // committed by the step solver on convergence
   std::vector<Load> loads;
+  /// Per structure of the model (in its order), how the phase drives it (free if not listed).
+  std::vector<StructureDrive> structure_drives;
 
   PhaseContext(const Model& model, const spec::Phase& phase);
 

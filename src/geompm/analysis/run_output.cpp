@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "geompm/analysis/output_fields.hpp"
+#include "geompm/core/error.hpp"
 #include "geompm/io/plot.hpp"
 
 namespace geompm {
@@ -37,6 +38,7 @@ OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved,
   saved.get(at.points);
   saved.get(at.grid);
   saved.get(at.last_values);
+  saved.get(at.structures);
   saved.expect_end();
   // Both files are checked before either is cut back, so a refused resume changes nothing.
   HistoryWriter::check_resumable(dir / "history.csv", at.history);
@@ -64,9 +66,16 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
                       : HistoryWriter(dir / "history.csv", columns_)),
       newton_(resume ? HistoryWriter(dir / "newton.csv", newton_columns, resume->newton)
                      : HistoryWriter(dir / "newton.csv", newton_columns)) {
+  for (const auto& structure : model.structures)
+    structure_series_.emplace_back(dir / ("structure_" + structure->name() + ".pvd"));
   if (!resume) return;
   points_series_.restore(std::move(resume->points));
   grid_series_.restore(std::move(resume->grid));
+  if (resume->structures.size() != structure_series_.size())
+    throw InputError(fmt::format("checkpoint: {} structures' series saved, the model has {}",
+                                 resume->structures.size(), structure_series_.size()));
+  for (std::size_t k = 0; k < structure_series_.size(); ++k)
+    structure_series_[k].restore(std::move(resume->structures[k]));
   last_values_ = std::move(resume->last_values);
 }
 
@@ -76,6 +85,9 @@ void OutputWriter::save(ByteWriter& out) const {
   out.put(points_series_.entries());
   out.put(grid_series_.entries());
   out.put(last_values_);
+  std::vector<std::vector<std::pair<double, std::string>>> structures;
+  for (const PvdSeries& series : structure_series_) structures.push_back(series.entries());
+  out.put(structures);
 }
 
 // One row per iteration, with where the residual is largest (mesh node; 0, 1, 2 = force in x, y,
@@ -107,6 +119,7 @@ void OutputWriter::newton_log(int step_number, double time, double dt, const Ste
 
 void OutputWriter::initial() {
   write_points(0.0, 0);
+  write_structures(0.0, 0);
   append_history(recorder_.initial_values(model_));
 }
 
@@ -115,6 +128,7 @@ void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseCon
   append_history(recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt));
   if (!vtk) return;
   write_points(time, step_number);
+  write_structures(time, step_number);
   if (model_.spec.output.vtk_grid) {
     FieldSet nodes, cells;
     grid_fields(model_, grid, step, nodes, cells);
@@ -153,6 +167,27 @@ void OutputWriter::write_points(double time, int step_number) {
   const std::string name = fmt::format("vtk/points_{:06d}.vtu", step_number);
   write_vtu_points(dir_ / name, model_.points.position, point_fields(model_));
   points_series_.add(time, name);
+}
+
+}  // namespace geompm
+
+namespace geompm {
+
+// Each structure's mesh where it is, with its displacement since the start of the analysis.
+void OutputWriter::write_structures(double time, int step_number) {
+  for (std::size_t k = 0; k < model_.structures.size(); ++k) {
+    const Structure& structure = *model_.structures[k];
+    const std::vector<Vec3>& x = structure.mesh().nodes();
+    FieldSet nodes, cells;
+    std::vector<Vec3> displacement(x.size());
+    for (std::size_t a = 0; a < x.size(); ++a)
+      displacement[a] = x[a] - structure.initial_nodes()[a];
+    nodes.vectors.emplace_back("displacement", std::move(displacement));
+    const std::string name =
+        fmt::format("vtk/structure_{}_{:06d}.vtu", structure.name(), step_number);
+    write_vtu_mesh(dir_ / name, structure.mesh().mesh(), x, nodes, cells);
+    structure_series_[k].add(time, name);
+  }
 }
 
 }  // namespace geompm

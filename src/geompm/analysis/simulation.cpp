@@ -98,6 +98,7 @@ void Simulation::begin_phase() {
   control_ = std::make_unique<StepController>(step_control_settings(spec.time_step), spec.duration);
   stepper_.start_phase();
   for (auto& d : model_.points.phase_displacement) d.setZero();
+  for (auto& structure : model_.structures) structure->start_phase();
   summary_.phases[phase_index_].status = "running";
   phase_started_ = Clock::now();
   phase_wall_before_ = 0.0;

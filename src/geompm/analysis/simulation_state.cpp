@@ -42,6 +42,13 @@ void Simulation::save(const std::filesystem::path& file) const {
     counted.save(out);
   });
   section("output", [&](ByteWriter& out) { output_->save(out); });
+  section("structures", [&](ByteWriter& out) {
+    out.put(static_cast<std::uint64_t>(model_.structures.size()));
+    for (const auto& structure : model_.structures) {
+      out.put(structure->name());
+      structure->save(out);
+    }
+  });
 
   CheckpointWriteOptions write_options;
   write_options.kill_half_way = kill_in_checkpoint_ > 0 && checkpoints_ + 1 == kill_in_checkpoint_;
@@ -95,6 +102,18 @@ void Simulation::load(const std::filesystem::path& file) {
   wall_before_ = summary_.wall_seconds;
   phase_wall_before_ = summary_.phases[phase_index_].wall_seconds;
   done_duration_before_ = done_duration_;
+
+  ByteReader structures = contents.section("structures");
+  if (const auto saved = structures.get<std::uint64_t>(); saved != model_.structures.size())
+    throw InputError(fmt::format("{}: {} structures saved, the model has {}", structures.context(),
+                                 saved, model_.structures.size()));
+  for (auto& structure : model_.structures) {
+    if (const auto name = structures.get<std::string>(); name != structure->name())
+      throw InputError(fmt::format("{}: the structure '{}' saved, the model has '{}' there",
+                                   structures.context(), name, structure->name()));
+    structure->load(structures);
+  }
+  structures.expect_end();
 
   ByteReader output = contents.section("output");
   output_ = std::make_unique<OutputWriter>(model_, options_.output_dir, output);

@@ -147,7 +147,12 @@ UnknownAt unknown_at(const DofMap& dofs, Index dof) {
 // force, so that a user can see which part of the model holds Newton back.
 std::string out_of_balance(const DofMap& dofs, const Mesh& mesh, Index dof, double value) {
   const UnknownAt u = unknown_at(dofs, dof);
-  if (u.node < 0) return fmt::format("largest residual at unknown {}", dof);
+  if (u.node < 0) {
+    // An unknown of no node: a structure's (its component: translations, then rotations).
+    const Unknown what = dofs.unknown(dof);
+    return fmt::format("largest out-of-balance force {:.3g} in component {} of '{}'", value,
+                       what.component, dofs.field(what.field).name);
+  }
   const Vec3& x = mesh.nodes[u.node];
   const std::string at = mesh.dim() == 3
                              ? fmt::format("({:.4g}, {:.4g}, {:.4g})", x.x(), x.y(), x.z())
@@ -226,6 +231,11 @@ bool StepSolver::extrapolated_start(double dt, Vector& x) const {
   bool any = false;
   for (Index k = 0; k < dofs.num_free(); ++k) {
     const UnknownAt at = unknown_at(dofs, dofs.dof_of_free(k));
+    // Unknowns of no node (a structure's) start from zero.
+    if (at.node < 0) {
+      x(k) = 0.0;
+      continue;
+    }
     const double rate = last_rate_[rate_index(at, grid_.dim())];
     x(k) = rate * dt;
     any = any || rate != 0.0;
@@ -237,7 +247,8 @@ void StepSolver::remember_increment(const Vector& du, double dt) {
   const DofMap& dofs = system_->dofs();
   last_rate_.assign(model_.mesh.nodes.size() * (grid_.dim() + 1), 0.0);
   for (Index d = 0; d < du.size(); ++d)
-    last_rate_[rate_index(unknown_at(dofs, d), grid_.dim())] = du(d) / dt;
+    if (const UnknownAt at = unknown_at(dofs, d); at.node >= 0)
+      last_rate_[rate_index(at, grid_.dim())] = du(d) / dt;
 }
 
 void StepSolver::constrain(const PhaseContext& phase, double t0, double t1, Step& step) const {
@@ -265,6 +276,14 @@ void StepSolver::constrain(const PhaseContext& phase, double t0, double t1, Step
         if (!std::isnan(increment(i))) dofs.constrain(dofs.dof(u, a, i), increment(i));
     }
   }
+  // Structures (docs/theory.md §17.4): a prescribed component of the motion is a constrained
+  // unknown with its increment over the step; axisymmetry holds the radial one and the rotation.
+  for (std::size_t k = 0; k < model_.structures.size(); ++k) {
+    const int field = dofs.find(model_.structures[k]->field_name());
+    const std::vector<double> increment = phase.structure_drives[k].increment(t0, t1);
+    for (std::size_t c = 0; c < increment.size(); ++c)
+      if (!std::isnan(increment[c])) dofs.constrain(dofs.dof(field, 0, int(c)), increment[c]);
+  }
 }
 
 void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
@@ -275,6 +294,8 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
   grid_.initialise(model_.points);
   if (grid_.mixed()) pressure_.initialise(grid_, model_.points);
   system_ = std::make_unique<StepSystem>(grid_);
+  // The structures' unknowns follow the grid's, before any contribution is made.
+  for (const auto& structure : model_.structures) structure->add_unknowns(system_->dofs());
   StepContext context{model_,  phase,        grid_,        pressure_, step.t0,
                       step.t1, step.dynamic, step.newmark, {}};
   add_step_contributions(*system_, context);
@@ -382,6 +403,10 @@ void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& 
   system_->report(step.du, reactions);
   result.set_reactions = std::move(reactions.point_sets);
   result.footing_reactions = std::move(reactions.structures);
+  for (std::size_t k = 0; k < model_.structures.size(); ++k)
+    if (const auto* rigid = dynamic_cast<const RigidStructure*>(model_.structures[k].get()))
+      result.structure_forces[rigid->name()] =
+          drive_forces(*rigid, phase.structure_drives[k], dofs, result.reaction, step.t1);
   convect_and_relocate(result, dt, step.dynamic);
   if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
     commit_motions(phase, step);

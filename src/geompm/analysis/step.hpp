@@ -16,6 +16,7 @@
 #include "geompm/physics/step_system.hpp"
 #include "geompm/solver/linear_solver.hpp"
 #include "geompm/solver/newton.hpp"
+#include "geompm/structures/rigid_structure_term.hpp"
 
 namespace geompm {
 
@@ -42,6 +43,8 @@ struct StepResult {
   Vector nodal_pressure;
   std::map<int, Vec3> set_reactions;  // point-set bit -> force its prescribed motion exerts
   std::map<std::string, Vec3> footing_reactions;  // rigid footing -> force it exerts on the soil
+  /// Structure -> what its drive exerts on it (docs/theory.md §17.4).
+  std::map<std::string, DriveForces> structure_forces;
   Vec3 gravity = Vec3::Zero();
   std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
 };

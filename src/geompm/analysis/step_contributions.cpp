@@ -10,6 +10,7 @@
 #include "geompm/physics/point_integrator.hpp"
 #include "geompm/physics/point_springs.hpp"
 #include "geompm/physics/sparse_node_springs.hpp"
+#include "geompm/structures/rigid_structure_term.hpp"
 
 namespace geompm {
 namespace {
@@ -99,14 +100,24 @@ void body_loads(StepSystem& system, StepContext& c) {
                                          c.phase.gravity(c.t1), forces));
 }
 
+void structures(StepSystem& system, StepContext& c) {
+  // Rigid structures' self-weight, applied loads and, in dynamics, inertia (docs/theory.md §17).
+  for (std::size_t k = 0; k < c.model.structures.size(); ++k)
+    if (auto* rigid = dynamic_cast<RigidStructure*>(c.model.structures[k].get()))
+      system.add(std::make_unique<RigidStructureTerm>(
+          *rigid, system.dofs(), c.phase.gravity(c.t1), c.phase.structure_drives[k].load(c.t1),
+          c.dynamic ? std::optional<Newmark>(c.newmark) : std::nullopt, c.t1 - c.t0));
+}
+
 void inertia(StepSystem& system, StepContext& c) {
   if (c.dynamic) system.add(std::make_unique<Inertia>(c.grid, system.dofs(), c.newmark));
 }
 
 // The terms of a step, in the order they are evaluated.
 using Maker = void (*)(StepSystem&, StepContext&);
-constexpr Maker makers[] = {material_points, empty_cells,    sparse_node_springs, ghost_penalty,
-                            point_motions,   rigid_footings, body_loads,          inertia};
+constexpr Maker makers[] = {material_points, empty_cells,   sparse_node_springs,
+                            ghost_penalty,   point_motions, rigid_footings,
+                            body_loads,      structures,    inertia};
 
 }  // namespace
 

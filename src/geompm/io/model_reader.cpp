@@ -269,7 +269,7 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
   if (!root.is_map())
     root.fail(fmt::format("expected a map of sections ({}), found {}", sections, root.describe()));
   const yaml::Map top = root.map({"title", "analysis", "mesh", "materials", "bodies", "point_sets",
-                                  "node_sets", "phases", "output", "numerics"});
+                                  "node_sets", "structures", "phases", "output", "numerics"});
 
   spec::Model model;
   model.file = file_name;
@@ -288,6 +288,8 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
     model.point_sets = read_point_sets(*point_sets, context);
   if (auto node_sets = top.find_non_empty("node_sets"))
     model.node_sets = read_node_sets(*node_sets, context);
+  if (auto structures = top.find_non_empty("structures"))
+    model.structures = read_structures(*structures, model.directory, context);
   model.phases = read_phases(top.required("phases"), context);
   if (auto output = top.find_non_empty("output")) model.output = read_output(*output, context);
   if (auto numerics = top.find_non_empty("numerics")) model.numerics = read_numerics(*numerics);

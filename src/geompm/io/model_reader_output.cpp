@@ -42,12 +42,34 @@ void check_column_name(const yaml::Node& at, bool named_by_user, const std::stri
                           named_by_user ? "" : "; give this one a different name"));
 }
 
+// The column's name: given, or quantity[_target][_component].
+spec::History named_history(const yaml::Node& node, const yaml::Map& section, spec::History history,
+                            const std::vector<spec::History>& earlier) {
+  const std::optional<yaml::Node> name = section.find("name");
+  if (name) {
+    history.name = name->text();
+  } else {
+    history.name = history.quantity;
+    for (const std::string* target :
+         {&history.boundary, &history.point_set, &history.footing, &history.structure})
+      if (!target->empty()) history.name += "_" + *target;
+    if (history.component >= 0)
+      history.name += std::string("_") + component_name(history.component);
+  }
+  check_column_name(name.value_or(node), name.has_value(), history.name, earlier);
+  return history;
+}
+
 spec::History read_history(const yaml::Node& node, const Context& context,
                            const std::vector<spec::History>& earlier) {
   const yaml::Map section =
-      node.map({"quantity", "boundary", "point_set", "footing", "component", "name"});
+      node.map({"quantity", "boundary", "point_set", "footing", "structure", "component", "name"});
   spec::History history;
   history.source = node.where();
+  if (section.has("structure")) {
+    read_structure_history(section, context, history);
+    return named_history(node, section, std::move(history), earlier);
+  }
   std::vector<std::string> quantities = vector_quantities;
   quantities.insert(quantities.end(), scalar_quantities.begin(), scalar_quantities.end());
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);
@@ -81,19 +103,7 @@ spec::History read_history(const yaml::Node& node, const Context& context,
             fmt::format("{} is one number for the whole model: it takes no {}", quantity, key));
   }
 
-  const std::optional<yaml::Node> name = section.find("name");
-  if (name) {
-    history.name = name->text();
-  } else {
-    history.name = quantity;
-    if (!history.boundary.empty()) history.name += "_" + history.boundary;
-    if (!history.point_set.empty()) history.name += "_" + history.point_set;
-    if (!history.footing.empty()) history.name += "_" + history.footing;
-    if (history.component >= 0)
-      history.name += std::string("_") + component_name(history.component);
-  }
-  check_column_name(name.value_or(node), name.has_value(), history.name, earlier);
-  return history;
+  return named_history(node, section, std::move(history), earlier);
 }
 
 std::string read_column(const yaml::Node& node, const std::vector<std::string>& columns) {

@@ -35,6 +35,8 @@ struct Context {
   std::vector<std::string> node_sets;
   /// Rigid footings of the phases (a name may recur: the same footing in several phases).
   std::vector<std::string> footings;
+  /// Structures (the top-level list).
+  std::vector<std::string> structures;
 };
 
 // Sections, in file order.
@@ -47,6 +49,13 @@ std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& conte
 std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
+// Structures (model_reader_structures.cpp): the top-level list, a phase's drives, a history.
+std::vector<spec::Structure> read_structures(const yaml::Node& node, const std::string& directory,
+                                             Context& context);
+std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,
+                                                        const Context& context);
+void read_structure_history(const yaml::Map& section, const Context& context,
+                            spec::History& history);
 
 // Shared value checks; each fails at the node with what was expected and what was found.
 

@@ -165,7 +165,7 @@ TEST_F(CheckpointFile, ReadsBackWhatWasWritten) {
   // The header: magic, format version, then the body's length and checksum.
   const std::string bytes = read_bytes(file);
   EXPECT_EQ(bytes.substr(0, 8), "GEOMPMCK");
-  EXPECT_EQ(bytes[8], 1);
+  EXPECT_EQ(bytes[8], static_cast<char>(checkpoint_format_version));
   std::uint64_t length = 0;
   std::memcpy(&length, bytes.data() + 12, 8);
   EXPECT_EQ(length + checkpoint_header_bytes, bytes.size());

@@ -1,0 +1,285 @@
+// Model file: the top-level `structures` (docs/user-guide.md, "structures"): each a built-in
+// shape or a Gmsh mesh, rigid, with its density, mass or weight and its reference point; a
+// phase's `structures` map, how the phase drives each (per component: a prescribed displacement
+// or velocity, or free with a force or moment); and the histories of a structure.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "geompm/io/model_reader_sections.hpp"
+
+namespace geompm::model_reader {
+
+namespace {
+
+const std::vector<std::string> time_only = {"t"};
+
+// The dimensions each shape takes: required, then optional (docs/user-guide.md).
+struct ShapeKeys {
+  std::vector<std::string> required, optional;
+};
+
+const std::map<std::string, ShapeKeys>& shape_keys() {
+  static const std::map<std::string, ShapeKeys> keys = {
+      {"pipe", {{"diameter"}, {"thickness", "length"}}},
+      {"tbar", {{"diameter"}, {"length"}}},
+      {"spudcan",
+       {{"diameter", "tip_angle"}, {"shoulder", "top_angle", "shaft_diameter", "shaft_length"}}},
+      {"plate", {{"width", "length"}, {"tip", "breadth"}}},
+      {"cone", {{"diameter", "shaft_length"}, {"apex_angle"}}},
+      {"footing", {{"width", "height"}, {"breadth"}}}};
+  return keys;
+}
+
+bool is_angle(const std::string& key) { return key.ends_with("angle"); }
+
+spec::StructureShape read_shape(const yaml::Node& node, const Context& context) {
+  if (!node.is_map())
+    node.fail("expected a shape such as {type: pipe, diameter: 0.8, position: [0, 1]}");
+  std::vector<std::string> kinds;
+  for (const auto& [kind, keys] : shape_keys()) kinds.push_back(kind);
+  const yaml::Map first =
+      node.map({"type", "position", "cell_size", "cell", "diameter", "thickness", "length",
+                "tip_angle", "shoulder", "top_angle", "shaft_diameter", "shaft_length", "width",
+                "tip", "breadth", "apex_angle", "height"});
+  spec::StructureShape shape;
+  shape.source = node.where();
+  shape.kind = first.required("type").choice(kinds);
+  const ShapeKeys& keys = shape_keys().at(shape.kind);
+  const bool three_d = context.dimension == 3;
+  // Only the dimensions this shape takes (a 3D plate also its breadth, a 3D bar its length).
+  std::vector<std::string_view> allowed = {"type", "position", "cell_size", "cell"};
+  for (const auto* list : {&keys.required, &keys.optional})
+    for (const std::string& key : *list) allowed.push_back(key);
+  for (const auto& [key, value] : node.entries()) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::vector<std::string> takes(keys.required);
+      takes.insert(takes.end(), keys.optional.begin(), keys.optional.end());
+      value.fail(fmt::format("a {} takes no '{}'; its dimensions are: {}", shape.kind, key,
+                             yaml::join(takes)));
+    }
+    if (key == "type" || key == "position" || key == "cell" || key == "cell_size") continue;
+    const double v = is_angle(key) ? read_positive(value) : read_non_negative(value);
+    if (is_angle(key) && v > 180)
+      value.fail(
+          fmt::format("expected an included angle in degrees, at most 180 (flat), found {}", v));
+    shape.dimensions[key] = v;
+  }
+  for (const std::string& key : keys.required) {
+    const double v = read_positive(first.required(key));
+    shape.dimensions[key] = v;
+  }
+  const bool needs_length = three_d && (shape.kind == "pipe" || shape.kind == "tbar");
+  if (needs_length) read_positive(first.required("length"));
+  if (three_d && shape.kind == "plate") read_positive(first.required("breadth"));
+  if (!three_d)
+    for (const char* key : {"length", "breadth"})
+      if (auto v = first.find(key);
+          v && (shape.kind == "pipe" || shape.kind == "tbar" || std::string(key) == "breadth"))
+        v->fail(fmt::format("a {}D {} has no {} (it is the section of a long or revolved body)",
+                            context.dimension, shape.kind, key));
+  if (context.kinematics == Kinematics::Axisymmetric && shape.kind == "tbar")
+    first.required("type").fail(
+        "a T-bar is no body of revolution: use it in plane strain or 3D (in axisymmetry a pipe "
+        "is a sphere)");
+  const yaml::Node position = first.required("position");
+  shape.position = position.vector(context.dimension);
+  if (context.kinematics == Kinematics::Axisymmetric && shape.position.x() != 0)
+    position.fail(fmt::format(
+        "in an axisymmetric model a structure is a body of revolution about the axis (x = 0): "
+        "its position's x must be 0, found {}",
+        shape.position.x()));
+  if (auto size = first.find("cell_size")) shape.cell_size = read_positive(*size);
+  if (auto cell = first.find("cell")) {
+    const std::string name =
+        cell->choice(three_d ? std::vector<std::string>{"tet4"}
+                             : std::vector<std::string>{"tri3", "tri6", "quad4"});
+    shape.cell = *parse_cell_type(name);
+  }
+  return shape;
+}
+
+std::string read_mesh_file(const yaml::Node& node, const std::string& directory) {
+  const std::string given = node.text();
+  std::filesystem::path path(given);
+  if (path.is_relative()) path = std::filesystem::path(directory) / path;
+  path = path.lexically_normal();
+  std::error_code error;
+  if (given.empty() || !std::filesystem::is_regular_file(path, error))
+    node.fail(fmt::format(
+        "the structure's mesh file '{}' not found (looked for {}; a relative path starts at the "
+        "model file's directory)",
+        given, path.string()));
+  return path.string();
+}
+
+spec::Structure read_structure(const yaml::Node& node, const std::string& directory,
+                               const Context& context) {
+  const yaml::Map section =
+      node.map({"name", "shape", "mesh", "rigid", "density", "mass", "weight", "reference_point"});
+  spec::Structure s;
+  s.source = node.where();
+  const yaml::Node name = section.required("name");
+  s.name = name.text();
+  if (s.name.empty() || s.name.find_first_of(" ,\"/\\:") != std::string::npos)
+    name.fail(fmt::format(
+        "expected a name without spaces, commas, quotes, slashes or colons (it names files and "
+        "history columns), found '{}'",
+        s.name));
+  if (section.exactly_one_of({"shape", "mesh"}) == "shape")
+    s.shape = read_shape(section.required("shape"), context);
+  else
+    s.mesh_file = read_mesh_file(section.required("mesh"), directory);
+  if (auto rigid = section.find("rigid")) {
+    s.rigid = rigid->boolean();
+    if (!s.rigid)
+      rigid->fail("deformable structures (rigid: false) are not yet supported; use rigid: true");
+  }
+  const std::string mass = section.exactly_one_of({"density", "mass", "weight"});
+  const double value = read_positive(section.required(mass));
+  (mass == "density" ? s.density : mass == "mass" ? s.mass : s.weight) = value;
+  if (auto reference = section.find("reference_point")) {
+    s.reference_point = reference->vector(context.dimension);
+    if (context.kinematics == Kinematics::Axisymmetric && s.reference_point->x() != 0)
+      reference->fail(
+          fmt::format("in an axisymmetric model the reference point is on the axis: its x must "
+                      "be 0, found {}",
+                      s.reference_point->x()));
+  }
+  return s;
+}
+
+// The rotational part of a drive: one expression about z in 2D (~ for free), a list of three in
+// 3D; into components 3..5. None in axisymmetry.
+void read_rotation(const yaml::Node& node, const Context& context, bool free_allowed,
+                   std::array<std::string, 6>& into) {
+  if (context.kinematics == Kinematics::Axisymmetric)
+    node.fail(
+        "in an axisymmetric model a structure is a body of revolution: it cannot turn (only its "
+        "axial motion is free); remove this key");
+  if (context.dimension == 3) {
+    const auto v = read_expression_vector(node, 3, time_only, free_allowed, "");
+    std::copy(v.begin(), v.end(), into.begin() + 3);
+  } else if (!node.is_null() || !free_allowed) {
+    into[5] = read_expression(node, time_only);
+  }
+}
+
+spec::StructureDrive read_drive(const std::string& name, const yaml::Node& node,
+                                const Context& context) {
+  const yaml::Map section =
+      node.map({"displacement", "velocity", "rotation", "angular_velocity", "force", "moment"});
+  spec::StructureDrive drive;
+  drive.structure = name;
+  drive.source = node.where();
+  const int dim = context.dimension;
+  const auto translation =
+      section.find("displacement") ? section.find("displacement") : section.find("velocity");
+  if (section.has("displacement") && section.has("velocity"))
+    section.required("velocity").fail("give either displacement or velocity, not both");
+  if (section.has("rotation") && section.has("angular_velocity"))
+    section.required("angular_velocity").fail("give either rotation or angular_velocity, not both");
+  drive.velocity = section.has("velocity") || section.has("angular_velocity");
+  if ((section.has("displacement") && section.has("angular_velocity")) ||
+      (section.has("velocity") && section.has("rotation")))
+    node.fail(
+        "prescribe the motion one way: displacement with rotation, or velocity with "
+        "angular_velocity");
+  if (translation) {
+    const auto v = read_expression_vector(*translation, dim, time_only, true, "");
+    std::copy(v.begin(), v.end(), drive.motion.begin());
+    if (context.kinematics == Kinematics::Axisymmetric && !v[0].empty() && v[0] != "0")
+      translation->items()[0].fail(
+          "in an axisymmetric model a structure moves only along the axis: its x component "
+          "must be ~ or 0");
+  }
+  if (auto rotation = section.find("rotation"))
+    read_rotation(*rotation, context, true, drive.motion);
+  if (auto rotation = section.find("angular_velocity"))
+    read_rotation(*rotation, context, true, drive.motion);
+  if (auto force = section.find("force")) {
+    const auto v = read_expression_vector(*force, dim, time_only, true, "");
+    std::copy(v.begin(), v.end(), drive.load.begin());
+  }
+  if (auto moment = section.find("moment")) read_rotation(*moment, context, true, drive.load);
+  // A component is either moved or loaded: both would fight.
+  static const char* names[] = {
+      "x", "y", "z", "rotation about x", "rotation about y", "rotation about z"};
+  for (int c = 0; c < 6; ++c)
+    if (!drive.motion[c].empty() && !drive.load[c].empty())
+      node.fail(fmt::format(
+          "the {} component of '{}' is both prescribed and loaded; a prescribed component takes "
+          "whatever force it needs (its reaction): give ~ for it in the force or moment",
+          names[c], name));
+  return drive;
+}
+
+}  // namespace
+
+std::vector<spec::Structure> read_structures(const yaml::Node& node, const std::string& directory,
+                                             Context& context) {
+  if (!node.is_list())
+    node.fail(
+        "expected a list of structures, e.g. - {name: pipe, shape: {type: pipe, ...}, "
+        "weight: 6}; found " +
+        node.describe());
+  std::vector<spec::Structure> structures;
+  for (const yaml::Node& item : node.items()) {
+    spec::Structure s = read_structure(item, directory, context);
+    for (const spec::Structure& other : structures)
+      if (other.name == s.name)
+        item.fail(fmt::format("the structure name '{}' is already used by {} (line {})", s.name,
+                              other.source.key_path, other.source.line));
+    context.structures.push_back(s.name);
+    structures.push_back(std::move(s));
+  }
+  return structures;
+}
+
+std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,
+                                                        const Context& context) {
+  if (!node.is_map())
+    node.fail(
+        "expected a map of structures to their drive, e.g. pipe: {velocity: [0.24, ~]}; "
+        "found " +
+        node.describe());
+  std::vector<spec::StructureDrive> drives;
+  for (const auto& [name, drive] : node.entries()) {
+    if (std::find(context.structures.begin(), context.structures.end(), name) ==
+        context.structures.end())
+      drive.fail(fmt::format("no structure named '{}'{}; defined: {}", name,
+                             yaml::did_you_mean(name, context.structures),
+                             context.structures.empty() ? "none (add a top-level structures list)"
+                                                        : yaml::join(context.structures)));
+    drives.push_back(read_drive(name, drive, context));
+  }
+  return drives;
+}
+
+void read_structure_history(const yaml::Map& section, const Context& context,
+                            spec::History& history) {
+  const std::vector<std::string> quantities = {
+      "reaction",           "moment",         "displacement", "rotation",
+      "phase_displacement", "phase_rotation", "position"};
+  history.quantity = section.required("quantity").choice(quantities);
+  history.structure =
+      read_reference(section.required("structure"), "structure", context.structures);
+  for (const char* key : {"boundary", "point_set", "footing"})
+    if (auto other = section.find(key))
+      other->fail(fmt::format("a history of a structure takes no {}", key));
+  const bool turning = history.quantity == "moment" || history.quantity.ends_with("rotation");
+  const yaml::Node component = section.required("component");
+  if (turning && context.dimension == 2) {
+    // In 2D the one axis of rotation is z.
+    if (component.text() != "z" && component.text() != "2")
+      component.fail(fmt::format("in a 2D model a {} is about z: expected z, found {}",
+                                 history.quantity, component.describe()));
+    history.component = 2;
+  } else {
+    history.component = read_component(component, context.dimension);
+  }
+}
+
+}  // namespace geompm::model_reader
