@@ -42,6 +42,9 @@ namespace {
 // last converged step, its motion since the start of the analysis or of the phase, where its
 // reference point is. Reactions are 0 before the first step.
 double structure_value(const Model& model, const spec::History& h, const StepResult* step) {
+  if (h.quantity == "contact_force")  // the soil's push on it (docs/theory.md eq. 18.10)
+    for (const ContactPair& pair : model.contacts)
+      if (pair.name == h.structure) return pair.force(h.component);
   for (const auto& structure : model.structures) {
     if (structure->name() != h.structure) continue;
     const auto* rigid = dynamic_cast<const RigidStructure*>(structure.get());

@@ -328,6 +328,31 @@ void check_boundaries(const spec::Model& spec, const Mesh& mesh) {
 
 }  // namespace
 
+namespace {
+// A structure's contact with the soil (docs/theory.md §18) as the model file gives it.
+ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structure, Index index) {
+  ContactPair pair;
+  pair.name = structure.name;
+  pair.structure = index;
+  const spec::Contact& c = structure.contact;
+  if (!c.bodies.empty()) {
+    pair.bodies.assign(spec.bodies.size(), 0);
+    for (std::size_t b = 0; b < spec.bodies.size(); ++b)
+      pair.bodies[b] =
+          std::find(c.bodies.begin(), c.bodies.end(), spec.bodies[b].name) != c.bodies.end();
+  }
+  const std::map<std::string, TangentialContact> laws = {{"smooth", TangentialContact::Smooth},
+                                                         {"rough", TangentialContact::Rough},
+                                                         {"adhesion", TangentialContact::Adhesion},
+                                                         {"friction", TangentialContact::Friction}};
+  pair.law.tangential = laws.at(c.tangential);
+  pair.law.adhesion = c.adhesion;
+  pair.law.friction = c.friction;
+  if (c.cap) pair.law.cap = *c.cap;
+  return pair;
+}
+}  // namespace
+
 std::unique_ptr<Model> build_model(const spec::Model& spec) {
   auto model = std::make_unique<Model>();
   model->spec = spec;
@@ -341,8 +366,10 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
-  for (const spec::Structure& structure : spec.structures)
+  for (const spec::Structure& structure : spec.structures) {
     model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
+    model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
+  }
   // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §10), before any step.
   apply_k0_procedure(*model);
   return model;

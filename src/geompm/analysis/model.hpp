@@ -13,6 +13,7 @@
 #include "geompm/mesh/point_locator.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/spec/model_spec.hpp"
+#include "geompm/contact/contact_pair.hpp"
 #include "geompm/structures/structure.hpp"
 
 namespace geompm {
@@ -31,6 +32,8 @@ struct Model {
   /// The structures (docs/theory.md §17), in the order of spec.structures; they move with the
   /// steps that converge (their state is saved by Structure::save).
   std::vector<std::unique_ptr<Structure>> structures;
+  /// The contact of each structure with the soil (docs/theory.md §18), in the same order.
+  std::vector<ContactPair> contacts;
   /// Displacement prescribed so far on the nodes of each driven boundary or node set (grid
   /// motions, summed over the phases; components never driven stay 0), for histories.
   std::map<std::string, Vec3> grid_displacement;

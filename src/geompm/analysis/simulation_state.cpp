@@ -44,9 +44,10 @@ void Simulation::save(const std::filesystem::path& file) const {
   section("output", [&](ByteWriter& out) { output_->save(out); });
   section("structures", [&](ByteWriter& out) {
     out.put(static_cast<std::uint64_t>(model_.structures.size()));
-    for (const auto& structure : model_.structures) {
-      out.put(structure->name());
-      structure->save(out);
+    for (std::size_t k = 0; k < model_.structures.size(); ++k) {
+      out.put(model_.structures[k]->name());
+      model_.structures[k]->save(out);
+      model_.contacts[k].save(out);  // its contact with the soil
     }
   });
 
@@ -107,11 +108,13 @@ void Simulation::load(const std::filesystem::path& file) {
   if (const auto saved = structures.get<std::uint64_t>(); saved != model_.structures.size())
     throw InputError(fmt::format("{}: {} structures saved, the model has {}", structures.context(),
                                  saved, model_.structures.size()));
-  for (auto& structure : model_.structures) {
+  for (std::size_t k = 0; k < model_.structures.size(); ++k) {
+    auto& structure = model_.structures[k];
     if (const auto name = structures.get<std::string>(); name != structure->name())
       throw InputError(fmt::format("{}: the structure '{}' saved, the model has '{}' there",
                                    structures.context(), name, structure->name()));
     structure->load(structures);
+    model_.contacts[k].load(structures);
   }
   structures.expect_end();
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geompm/boundary/footing_contact.hpp"
+#include "geompm/contact/level_set_contact.hpp"
 #include "geompm/physics/body_loads.hpp"
 #include "geompm/physics/empty_cell_stiffness.hpp"
 #include "geompm/physics/ghost_penalty.hpp"
@@ -109,15 +110,26 @@ void structures(StepSystem& system, StepContext& c) {
           c.dynamic ? std::optional<Newmark>(c.newmark) : std::nullopt, c.t1 - c.t0));
 }
 
+void contacts(StepSystem& system, StepContext& c) {
+  // Each structure's contact with the soil's level set (docs/theory.md §18), its multipliers
+  // after the structures' unknowns.
+  for (ContactPair& pair : c.model.contacts)
+    system.add(std::make_unique<LevelSetContact>(c.grid, c.model.points, *c.model.locator,
+                                                 *c.model.structures[pair.structure], pair,
+                                                 c.model.largest_modulus(), system.dofs()));
+}
+
 void inertia(StepSystem& system, StepContext& c) {
   if (c.dynamic) system.add(std::make_unique<Inertia>(c.grid, system.dofs(), c.newmark));
 }
 
 // The terms of a step, in the order they are evaluated.
 using Maker = void (*)(StepSystem&, StepContext&);
-constexpr Maker makers[] = {material_points, empty_cells,   sparse_node_springs,
-                            ghost_penalty,   point_motions, rigid_footings,
-                            body_loads,      structures,    inertia};
+// Contact comes first: it adds its multipliers to the unknowns, which the others size their
+// vectors by.
+constexpr Maker makers[] = {contacts,      material_points, empty_cells,    sparse_node_springs,
+                            ghost_penalty, point_motions,   rigid_footings, body_loads,
+                            structures,    inertia};
 
 }  // namespace
 

@@ -10,13 +10,13 @@ enum { kP = 0, kS = 1, kN = 2, kT = 3 };  // the derivatives' order: p, s, l_n, 
 }
 
 ContactEquations contact_equations(const ContactLaw& law, double scale, double p, double s,
-                                   double l_n, double l_t) {
+                                   double l_n, double l_t, double closed) {
   ContactEquations e;
   // Normal (theory eq. 18.4): C_n = l_n - max(0, l_n + p), written as p where the max is active
   // and -l_n where it is not (the same root, with the sign that makes the tangent the symmetric
   // saddle point of the constrained energy where it touches).
   const double augmented = l_n + p;
-  const bool touching = augmented > 0.0;
+  const bool touching = augmented > -closed;
   if (touching) {
     e.normal = p;
     e.normal_d[kP] = 1.0;
@@ -38,7 +38,7 @@ ContactEquations contact_equations(const ContactLaw& law, double scale, double p
   if (law.tangential == TangentialContact::Adhesion) {
     bound = law.adhesion / scale;
   } else if (law.tangential == TangentialContact::Friction) {
-    bound = law.friction * augmented;
+    bound = law.friction * std::max(augmented, 0.0);
     bound_d_normal = law.friction;
     if (bound > law.cap / scale) {
       bound = law.cap / scale;

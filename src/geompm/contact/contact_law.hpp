@@ -39,8 +39,10 @@ struct ContactEquations {
 };
 
 /// The equations at (p, s, l_n, l_t); `scale` is c (pressure per unit length), which converts the
-/// law's stresses into the multipliers' length units.
+/// law's stresses into the multipliers' length units. A segment counts as touching where
+/// l_n + p > -closed: a structure placed on the soil's surface (p = 0 up to round-off) starts in
+/// contact rather than free, whose tangent would be singular under a prescribed load.
 ContactEquations contact_equations(const ContactLaw& law, double scale, double p, double s,
-                                   double l_n, double l_t);
+                                   double l_n, double l_t, double closed = 0.0);
 
 }  // namespace geompm

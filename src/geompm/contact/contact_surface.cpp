@@ -1,5 +1,6 @@
 #include "geompm/contact/contact_surface.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "geompm/mesh/cell_geometry.hpp"
@@ -46,8 +47,8 @@ void cut_segment(const Vec3& a, const Vec3& b, int pieces, bool axisymmetric,
   }
 }
 
-void cut_triangle(const Vec3& a, const Vec3& b, const Vec3& c, int pieces,
-                  ContactSegment prototype, std::vector<ContactSegment>& out) {
+void cut_triangle(const Vec3& a, const Vec3& b, const Vec3& c, int pieces, ContactSegment prototype,
+                  std::vector<ContactSegment>& out) {
   // The triangle's pieces^2 similar triangles (upright and inverted rows), three-point rule each.
   const Vec3 e1 = (b - a) / pieces, e2 = (c - a) / pieces;
   const double area = 0.5 * e1.cross(e2).norm();

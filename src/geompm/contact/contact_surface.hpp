@@ -45,8 +45,8 @@ double cell_size_at(const PointLocator& locator, const Vec3& x, double fallback)
 
 void cut_segment(const Vec3& a, const Vec3& b, int pieces, bool axisymmetric,
                  ContactSegment prototype, std::vector<ContactSegment>& out);
-void cut_triangle(const Vec3& a, const Vec3& b, const Vec3& c, int pieces,
-                  ContactSegment prototype, std::vector<ContactSegment>& out);
+void cut_triangle(const Vec3& a, const Vec3& b, const Vec3& c, int pieces, ContactSegment prototype,
+                  std::vector<ContactSegment>& out);
 ContactSegment segment_frame(const Facet& facet, Index index, int dim);
 
 template <class Spacing>

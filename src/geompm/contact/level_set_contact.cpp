@@ -1,5 +1,6 @@
 #include "geompm/contact/level_set_contact.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -18,6 +19,9 @@ void cell_shape(const Mesh& mesh, const Vec3& xi, double* N) {
     for (int a = 0; a < E::nodes; ++a) N[a] = values(a);
   });
 }
+
+// Gaps below a millionth of a cell count as closed (contact_equations).
+constexpr double kClosed = 1e-6;
 
 double cell_size(const Mesh& mesh, Index cell) {
   return std::pow(cell_measure(mesh, cell, false), 1.0 / mesh.dim());
@@ -49,18 +53,50 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
     pair_.state.assign(all_.size(), ContactState::Open);
     pair_.in_grid.assign(all_.size(), 0);
   }
-  for (std::size_t s = 0; s < all_.size(); ++s) {
+  for (const std::vector<Index>& group : group_pieces()) {
     Kinematics k;
-    if (build_kinematics(all_[s], static_cast<Index>(s), k)) segments_.push_back(std::move(k));
+    if (build_kinematics(group, k)) segments_.push_back(std::move(k));
   }
   field_ = dofs.add_field("contact:" + structure.name(), FieldKind::Other,
                           static_cast<Index>(segments_.size()), 1 + tangents_);
   state_.assign(segments_.size(), ContactState::Open);
 }
 
-bool LevelSetContact::build_kinematics(const ContactSegment& segment, Index index,
-                                       Kinematics& k) const {
-  // Eq. 18.3: p = sum_q w_q [d_q + n . (u_s(x_q) - sum_a N_a(x_q) u_a)] / A, the same with a
+std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
+  // One group per background cell and direction (normals within 45 degrees of the group's
+  // first): one multiplier per cell a surface crosses, as the grid resolves no finer (eq. 18.1).
+  std::vector<std::vector<Index>> groups;
+  std::vector<Index> group_cell;
+  std::vector<Vec3> group_normal;
+  Index hint = -1;
+  for (std::size_t s = 0; s < all_.size(); ++s) {
+    Vec3 centre = Vec3::Zero();
+    for (const ContactGaussPoint& q : all_[s].points) centre += q.weight * q.x;
+    centre /= all_[s].measure;
+    // The cell on the soil's side of the piece (a piece on a cell face belongs to the cell its
+    // normal points into, so that the pieces of one face are one group).
+    const auto at = locator_.locate(centre, hint);
+    if (!at) continue;
+    const double h = cell_size(grid_.mesh(), at->cell);
+    const auto where = locator_.locate(centre + 1e-3 * h * all_[s].normal, at->cell);
+    if (!where) continue;
+    hint = where->cell;
+    std::size_t g = 0;
+    while (g < groups.size() &&
+           (group_cell[g] != where->cell || group_normal[g].dot(all_[s].normal) < 0.7071))
+      ++g;
+    if (g == groups.size()) {
+      groups.emplace_back();
+      group_cell.push_back(where->cell);
+      group_normal.push_back(all_[s].normal);
+    }
+    groups[g].push_back(static_cast<Index>(s));
+  }
+  return groups;
+}
+
+bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinematics& k) const {
+  // Eq. 18.3: p = sum_q w_q [d_q + n_q . (u_s(x_q) - sum_a N_a(x_q) u_a)] / A, the same with a
   // tangent for the slip; d_q = phi / max(|grad phi|, 1 / (2 h)) the level set's depth (eq. 18.2).
   const Mesh& mesh = grid_.mesh();
   const int u = dofs_.find("displacement");
@@ -69,29 +105,41 @@ bool LevelSetContact::build_kinematics(const ContactSegment& segment, Index inde
   double N[27];
   Index hint = -1;
   double h = 0.0;
-  for (const ContactGaussPoint& q : segment.points) {
-    const auto where = locator_.locate(q.x, hint);
-    if (!where) return false;
-    hint = where->cell;
-    const auto nodes = mesh.cell_nodes(where->cell);
-    for (Index node : nodes)
-      if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
-    h = cell_size(mesh, where->cell);
-    const double phi = level_set_.value(where->cell, where->xi);
-    const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
-    const double w = q.weight / segment.measure;
-    k.p0 += w * phi / std::max(gradient.norm(), 0.5 / h);
-    const auto along = [&](const Vec3& c) {
-      return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
-                                   w * segment.tangents[1].dot(c)};
-    };
-    cell_shape(mesh, where->xi, N);
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      for (int i = 0; i < dim_; ++i)
-        terms.push_back({dofs_.dof(u, grid_.node_to_active()[nodes[a]], i),
-                         along(-N[a] * Vec3::Unit(i))});
-    structure_.displacement_weights(dofs_, q.x, segment.structure_cell, weights);
-    for (const DofWeight& dw : weights) terms.push_back({dw.dof, along(dw.coefficient)});
+  for (Index piece : pieces) k.measure += all_[piece].measure;
+  for (Index piece : pieces) {
+    const ContactSegment& segment = all_[piece];
+    for (int c = 0; c < 3; ++c)
+      k.start[c] += segment.measure / k.measure * pair_.multipliers[piece][c];
+    const bool touching = pair_.in_grid[piece] && pair_.state[piece] != ContactState::Open;
+    for (const ContactGaussPoint& q : segment.points) {
+      const auto where = locator_.locate(q.x, hint);
+      if (!where) return false;
+      hint = where->cell;
+      const auto nodes = mesh.cell_nodes(where->cell);
+      for (Index node : nodes)
+        if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
+      h = std::max(h, cell_size(mesh, where->cell));
+      // A piece that touched the soil at the end of the last step still touches it: the soil's
+      // surface there is where the contact held it (eq. 18.2), which the level set, smeared over
+      // a cell, would place up to the step's displacement away.
+      const double w = q.weight / k.measure;
+      if (!touching) {
+        const double phi = level_set_.value(where->cell, where->xi);
+        const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
+        k.p0 += w * phi / std::max(gradient.norm(), 0.5 / cell_size(mesh, where->cell));
+      }
+      const auto along = [&](const Vec3& c) {
+        return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
+                                     w * segment.tangents[1].dot(c)};
+      };
+      cell_shape(mesh, where->xi, N);
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        for (int i = 0; i < dim_; ++i)
+          terms.push_back(
+              {dofs_.dof(u, grid_.node_to_active()[nodes[a]], i), along(-N[a] * Vec3::Unit(i))});
+      structure_.displacement_weights(dofs_, q.x, segment.structure_cell, weights);
+      for (const DofWeight& dw : weights) terms.push_back({dw.dof, along(dw.coefficient)});
+    }
   }
   std::sort(terms.begin(), terms.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -106,16 +154,15 @@ bool LevelSetContact::build_kinematics(const ContactSegment& segment, Index inde
     k.dp.push_back(c[0]);
     k.ds.push_back({c[1], c[2]});
   }
-  k.segment = index;
-  k.measure = segment.measure;
+  k.pieces = pieces;
   k.scale = pair_.scale_factor * modulus_ / h;  // c = E / h (eq. 18.8)
+  k.cell = h;
   return true;
 }
 
 double LevelSetContact::multiplier(const Vector& du, std::size_t k, int component) const {
   // The unknowns are the multipliers' changes over the step (eq. 18.9).
-  return pair_.multipliers[segments_[k].segment][component] +
-         du(dofs_.dof(field_, static_cast<Index>(k), component));
+  return segments_[k].start[component] + du(dofs_.dof(field_, static_cast<Index>(k), component));
 }
 
 void LevelSetContact::declare_couplings(SparsityBuilder& pattern) const {
@@ -151,7 +198,7 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
     double l_t[2] = {0.0, 0.0};
     for (int t = 0; t < std::max(tangents_, 1); ++t) {
       if (t < tangents_) l_t[t] = multiplier(du, k, 1 + t);
-      e[t] = contact_equations(pair_.law, s.scale, p, slip[t], l_n, l_t[t]);
+      e[t] = contact_equations(pair_.law, s.scale, p, slip[t], l_n, l_t[t], kClosed * s.cell);
     }
     state_[k] = e[0].state;
     forces.internal(n_dof) += cA * e[0].normal;
@@ -174,7 +221,8 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
       const ContactEquations& et = e[t];
       for (std::size_t j = 0; j < s.dofs.size(); ++j) {
         put(s.dofs[j], t_dof, cA * s.ds[j][t]);
-        put(t_dof, s.dofs[j], cA * (et.tangential_d[0] * s.dp[j] + et.tangential_d[1] * s.ds[j][t]));
+        put(t_dof, s.dofs[j],
+            cA * (et.tangential_d[0] * s.dp[j] + et.tangential_d[1] * s.ds[j][t]));
       }
       put(t_dof, n_dof, cA * et.tangential_d[2]);
       put(t_dof, t_dof, cA * et.tangential_d[3]);
@@ -189,14 +237,16 @@ void LevelSetContact::report(const Vector& du, Reactions& reactions) {
   converged_.assign(segments_.size(), {0.0, 0.0, 0.0});
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     const Kinematics& s = segments_[k];
-    const ContactSegment& segment = all_[s.segment];
     for (int c = 0; c <= tangents_; ++c) converged_[k][c] = multiplier(du, k, c);
-    Vec3 traction = -s.scale * converged_[k][0] * segment.normal;
-    for (int t = 0; t < tangents_; ++t)
-      traction -= s.scale * converged_[k][1 + t] * segment.tangents[t];
-    for (const ContactGaussPoint& q : segment.points) {
-      force += q.weight * traction;
-      moment += q.x.cross(q.weight * traction);
+    for (Index piece : s.pieces) {
+      const ContactSegment& segment = all_[piece];
+      Vec3 traction = -s.scale * converged_[k][0] * segment.normal;
+      for (int t = 0; t < tangents_; ++t)
+        traction -= s.scale * converged_[k][1 + t] * segment.tangents[t];
+      for (const ContactGaussPoint& q : segment.points) {
+        force += q.weight * traction;
+        moment += q.x.cross(q.weight * traction);
+      }
     }
   }
   pair_.force = force;
@@ -205,20 +255,22 @@ void LevelSetContact::report(const Vector& du, Reactions& reactions) {
 }
 
 void LevelSetContact::commit() {
+  // Each piece keeps its group's multipliers, the start of the next step's.
   std::fill(pair_.in_grid.begin(), pair_.in_grid.end(), 0);
   for (auto& m : pair_.multipliers) m = {0.0, 0.0, 0.0};
   std::fill(pair_.pressure.begin(), pair_.pressure.end(), 0.0);
   std::fill(pair_.shear.begin(), pair_.shear.end(), 0.0);
   std::fill(pair_.state.begin(), pair_.state.end(), ContactState::Open);
   for (std::size_t k = 0; k < segments_.size() && k < converged_.size(); ++k) {
-    const Index s = segments_[k].segment;
-    pair_.in_grid[s] = 1;
-    pair_.multipliers[s] = converged_[k];
-    pair_.pressure[s] = segments_[k].scale * converged_[k][0];
-    pair_.shear[s] = segments_[k].scale *
-                     std::hypot(converged_[k][1], tangents_ > 1 ? converged_[k][2] : 0.0) *
-                     (tangents_ == 1 && converged_[k][1] < 0.0 ? -1.0 : 1.0);
-    pair_.state[s] = state_[k];
+    const Kinematics& s = segments_[k];
+    const double shear = s.scale * std::hypot(converged_[k][1], converged_[k][2]);
+    for (Index piece : s.pieces) {
+      pair_.in_grid[piece] = 1;
+      pair_.multipliers[piece] = converged_[k];
+      pair_.pressure[piece] = s.scale * converged_[k][0];
+      pair_.shear[piece] = tangents_ == 1 && converged_[k][1] < 0.0 ? -shear : shear;
+      pair_.state[piece] = state_[k];
+    }
   }
 }
 

@@ -23,9 +23,8 @@ class LevelSetContact final : public Contribution {
  public:
   /// Adds the pair's multipliers to `dofs` (after the structure's and the grid's fields).
   /// `modulus`: the soil's Young's modulus for the scale c = modulus / h.
-  LevelSetContact(const GridSystem& grid, const MaterialPoints& points,
-                  const PointLocator& locator, const Structure& structure, ContactPair& pair,
-                  double modulus, DofMap& dofs);
+  LevelSetContact(const GridSystem& grid, const MaterialPoints& points, const PointLocator& locator,
+                  const Structure& structure, ContactPair& pair, double modulus, DofMap& dofs);
   const char* name() const override { return "contact"; }
 
   void declare_couplings(SparsityBuilder& pattern) const override;
@@ -39,17 +38,23 @@ class LevelSetContact final : public Contribution {
   Index active_segments() const { return static_cast<Index>(segments_.size()); }
 
  private:
-  /// A segment's mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum ds_tj du_j, over
-  /// the unknowns j of the structure and of the grid nodes around its Gauss points (eq. 18.3).
+  /// A group of pieces of the surface in one background cell, facing one way, with one set of
+  /// multipliers (eq. 18.1): its mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum
+  /// ds_tj du_j, over the unknowns j of the structure and of the grid nodes around its Gauss
+  /// points (eq. 18.3), and its multipliers at the start of the step.
   struct Kinematics {
-    Index segment = -1;  // in contact_segments' numbering
-    double measure = 0.0, scale = 0.0;
+    std::vector<Index> pieces;                      // in contact_segments' numbering
+    double measure = 0.0, scale = 0.0, cell = 0.0;  // A, c, h
     double p0 = 0.0;
+    std::array<double, 3> start = {0.0, 0.0, 0.0};
     std::vector<Index> dofs;
     std::vector<double> dp;
     std::vector<std::array<double, 2>> ds;
   };
-  bool build_kinematics(const ContactSegment& segment, Index index, Kinematics& k) const;
+  /// The pieces grouped by the background cell their centre lies in and by the way they face;
+  /// pieces outside the step's grid are left out.
+  std::vector<std::vector<Index>> group_pieces() const;
+  bool build_kinematics(const std::vector<Index>& pieces, Kinematics& k) const;
   double multiplier(const Vector& du, std::size_t k, int component) const;
 
   const GridSystem& grid_;
@@ -61,8 +66,8 @@ class LevelSetContact final : public Contribution {
   int dim_ = 2;
   int tangents_ = 0;  // tangential multipliers per segment: 0 (smooth), 1 (2D), 2 (3D)
   double modulus_ = 0.0;
-  std::vector<ContactSegment> all_;  // every segment of the structure's surface
-  std::vector<Kinematics> segments_;  // those in the step's grid, with multipliers
+  std::vector<ContactSegment> all_;   // the structure's surface in pieces about a cell long
+  std::vector<Kinematics> segments_;  // groups of pieces in the step's grid, with multipliers
   int field_ = -1;
   // At the last evaluation, per segment with multipliers: the law's state.
   std::vector<ContactState> state_;

@@ -50,6 +50,8 @@ std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
 // Structures (model_reader_structures.cpp): the top-level list, a phase's drives, a history.
+/// A structure's `contact` (model_reader_contact.cpp).
+spec::Contact read_contact(const yaml::Node& node, const Context& context);
 std::vector<spec::Structure> read_structures(const yaml::Node& node, const std::string& directory,
                                              Context& context);
 std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,

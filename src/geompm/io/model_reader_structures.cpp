@@ -117,8 +117,8 @@ std::string read_mesh_file(const yaml::Node& node, const std::string& directory)
 
 spec::Structure read_structure(const yaml::Node& node, const std::string& directory,
                                const Context& context) {
-  const yaml::Map section =
-      node.map({"name", "shape", "mesh", "rigid", "density", "mass", "weight", "reference_point"});
+  const yaml::Map section = node.map({"name", "shape", "mesh", "rigid", "density", "mass", "weight",
+                                      "reference_point", "contact"});
   spec::Structure s;
   s.source = node.where();
   const yaml::Node name = section.required("name");
@@ -128,6 +128,7 @@ spec::Structure read_structure(const yaml::Node& node, const std::string& direct
         "expected a name without spaces, commas, quotes, slashes or colons (it names files and "
         "history columns), found '{}'",
         s.name));
+  if (auto contact = section.find("contact")) s.contact = read_contact(*contact, context);
   if (section.exactly_one_of({"shape", "mesh"}) == "shape")
     s.shape = read_shape(section.required("shape"), context);
   else
@@ -262,7 +263,7 @@ void read_structure_history(const yaml::Map& section, const Context& context,
                             spec::History& history) {
   const std::vector<std::string> quantities = {
       "reaction",           "moment",         "displacement", "rotation",
-      "phase_displacement", "phase_rotation", "position"};
+      "phase_displacement", "phase_rotation", "position",     "contact_force"};
   history.quantity = section.required("quantity").choice(quantities);
   history.structure =
       read_reference(section.required("structure"), "structure", context.structures);

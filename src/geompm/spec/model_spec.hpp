@@ -157,8 +157,20 @@ struct StructureShape {
 /// A structure in the soil (docs/theory.md §17): a finite-element mesh of its own, from a shape
 /// or a Gmsh file, rigid (one rigid-body motion); its mass from exactly one of density, mass or
 /// weight (per unit thickness in plane strain, per radian in axisymmetry).
+/// The contact of a structure with the soil (docs/theory.md §18): the tangential law and the
+/// bodies whose points it touches.
+struct Contact {
+  std::string tangential = "smooth";  // smooth | rough | adhesion | friction
+  double adhesion = 0.0;              // adhesion: the largest shear stress
+  double friction = 0.0;              // friction: Coulomb's mu ...
+  std::optional<double> cap;          // ... and, optionally, the largest shear stress
+  std::vector<std::string> bodies;    // empty: every body
+  SourceLocation source;
+};
+
 struct Structure {
   std::string name;
+  Contact contact;  // every structure touches the soil; smooth unless said otherwise
   std::optional<StructureShape> shape;  // either a built-in shape ...
   std::string mesh_file;                // ... or a Gmsh .msh file (absolute path)
   bool rigid = true;

@@ -141,7 +141,8 @@ TEST(ContactLaw, ABlockSlidingUnderFrictionCarriesMuTimesItsNormalForce) {
 
 TEST(ContactLaw, AdhesionAndCapLimitTheShearToAStress) {
   const double N = 10.0, T = 5.0, k = 100.0, g = 0.01;
-  const BlockResult adhesion = solve_block(ContactLaw{TangentialContact::Adhesion, 2.0}, 50.0, N, T);
+  const BlockResult adhesion =
+      solve_block(ContactLaw{TangentialContact::Adhesion, 2.0}, 50.0, N, T);
   EXPECT_NEAR(adhesion.shear, 2.0, 1e-10);
   const BlockResult rough = solve_block(ContactLaw{TangentialContact::Rough}, 50.0, N, T);
   EXPECT_NEAR(rough.u, 0.0, 1e-14);

@@ -1,0 +1,44 @@
+// A structure's `contact` entry (docs/user-guide.md, "structures"): the tangential law and the
+// bodies the structure touches.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "geompm/io/model_reader_sections.hpp"
+
+namespace geompm::model_reader {
+
+spec::Contact read_contact(const yaml::Node& node, const Context& context) {
+  spec::Contact c;
+  c.source = node.where();
+  const yaml::Map section = node.map({"tangential", "adhesion", "friction", "cap", "bodies"});
+  if (auto tangential = section.find("tangential"))
+    c.tangential = tangential->choice({"smooth", "rough", "adhesion", "friction"});
+  // Each law's parameter is given with it, and only with it.
+  const auto parameter = [&](const char* key, const char* law) -> std::optional<yaml::Node> {
+    auto value = section.find(key);
+    if (value && c.tangential != law)
+      value->fail(fmt::format("'{}' belongs to tangential: {}, not to tangential: {}", key, law,
+                              c.tangential));
+    if (!value && c.tangential == law && std::string(key) != "cap")
+      section.node().fail(fmt::format("tangential: {} needs '{}'", law, key));
+    return value;
+  };
+  if (auto adhesion = parameter("adhesion", "adhesion")) c.adhesion = read_positive(*adhesion);
+  if (auto friction = parameter("friction", "friction")) c.friction = read_positive(*friction);
+  if (auto cap = parameter("cap", "friction")) c.cap = read_positive(*cap);
+  if (context.dimension == 3 && (c.tangential == "adhesion" || c.tangential == "friction"))
+    section.node().fail(fmt::format(
+        "tangential: {} is not yet supported in 3D (smooth and rough are)", c.tangential));
+  if (auto bodies = section.find("bodies"))
+    for (const yaml::Node& body : bodies->items()) {
+      const std::string name = body.text();
+      if (std::find(context.bodies.begin(), context.bodies.end(), name) == context.bodies.end())
+        body.fail(
+            fmt::format("no body named '{}' (bodies: {})", name, fmt::join(context.bodies, ", ")));
+      c.bodies.push_back(name);
+    }
+  return c;
+}
+
+}  // namespace geompm::model_reader
