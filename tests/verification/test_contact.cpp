@@ -1,0 +1,107 @@
+// Level-set contact of a rigid structure with the soil (docs/theory.md §18): the contact patch
+// test (a uniform pressure passed on exactly), a plate sliding under Coulomb friction (the shear
+// force exactly mu times the normal one), and results that do not depend on the multipliers'
+// scale c = E / h (a decade up or down).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "run_model.hpp"
+
+namespace geompm {
+namespace {
+
+testing::ModelRun run_scaled(const std::string& example, double scale_factor,
+                             const std::string& name) {
+  testing::ModelRun r;
+  r.model = build_model(testing::read_example(example));
+  for (ContactPair& pair : r.model->contacts) pair.scale_factor = scale_factor;
+  r.output = testing::fresh_directory(name);
+  RunOptions options;
+  options.output_dir = r.output;
+  options.progress = false;
+  r.summary = run_analysis(*r.model, options);
+  r.history = read_csv(r.output / "history.csv");
+  return r;
+}
+
+TEST(Contact, PatchTestPassesAUniformPressureExactly) {
+  // One step: the block's surface lies on a grid line, and every point carries sigma_yy = -F / B
+  // to round-off, at the settlement of a confined Hencky column, sigma_yy = M ln(l) / l with
+  // l = 1 - d / H.
+  auto spec = testing::read_example("structures/contact_patch.yaml");
+  spec.phases[0].duration = 0.25;  // one step, F = 25 kN/m
+  const auto run = testing::run_spec(spec, "contact_patch");
+  const double F = 25.0, B = 1.0, H = 1.0, E = 10000, nu = 0.3;
+  const MaterialPoints& points = run.model->points;
+  ASSERT_EQ(points.size(), 64);
+  for (Index p = 0; p < points.size(); ++p)
+    EXPECT_NEAR(points.stress[p](1, 1), -F / B, 1e-9 * F) << "point " << p;
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double l = 1.0 + run.column("plate_uy").back() / H;
+  EXPECT_NEAR(M * std::log(l) / l, -F / B, 1e-8 * F);
+  EXPECT_NEAR(run.column("contact_fy").back(), F, 1e-9 * F);
+  EXPECT_NEAR(run.column("base_reaction").back(), F, 1e-6 * F);
+}
+
+TEST(Contact, PatchTestSettlesAsAHenckyColumnStepAfterStep) {
+  // Four steps: the plate follows the block's surface as it moves into the top row of cells
+  // (persistent contact, eq. 18.2), and settles as the confined Hencky column under F. (The
+  // points' stresses then differ from -F / B by the points' quadrature of cells they no longer
+  // fill exactly, up to 1.7 % here: MPM's, not the contact's.)
+  const auto run =
+      testing::run_spec(testing::read_example("structures/contact_patch.yaml"), "contact_patch_4");
+  const double F = 100.0, E = 10000, nu = 0.3;
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  double lo = 0.9, hi = 1.0;  // M ln(l) / l = -F, by bisection
+  for (int k = 0; k < 200; ++k) {
+    const double l = 0.5 * (lo + hi);
+    (M * std::log(l) / l < -F ? lo : hi) = l;
+  }
+  EXPECT_NEAR(-run.column("plate_uy").back(), 1.0 - lo, 1e-4 * (1.0 - lo));
+  EXPECT_NEAR(run.column("contact_fy").back(), F, 1e-9 * F);
+  EXPECT_NEAR(run.column("base_reaction").back(), F, 1e-6 * F);
+}
+
+TEST(Contact, APlateSlidingUnderFrictionCarriesMuTimesItsNormalForce) {
+  const auto run = run_scaled("structures/contact_friction.yaml", 1.0, "contact_friction");
+  const auto time = run.column("time"), fx = run.column("contact_fx"),
+             fy = run.column("contact_fy"), ux = run.column("plate_ux");
+  int sliding = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] <= 1.0) {
+      EXPECT_NEAR(fx[k], 0.0, 1e-9);  // pressed only: no shear
+      continue;
+    }
+    EXPECT_NEAR(fy[k], 50.0, 1e-9);
+    // Dragged in +x: the soil holds it back by mu F once it slides, never more.
+    EXPECT_LE(std::abs(fx[k]), 0.3 * 50.0 * (1 + 1e-12));
+    if (ux[k] >= 0.01) {
+      EXPECT_NEAR(fx[k], -0.3 * 50.0, 1e-9);
+      ++sliding;
+    }
+  }
+  EXPECT_GE(sliding, 5);
+}
+
+TEST(Contact, ResultsDoNotDependOnTheMultipliersScale) {
+  // The scale changes the Newton path, not the solution: a decade up or down gives the same
+  // histories to the Newton tolerance (docs/validation.md, "Contact").
+  for (const char* example :
+       {"structures/contact_patch.yaml", "structures/contact_friction.yaml"}) {
+    SCOPED_TRACE(example);
+    const auto base = run_scaled(example, 1.0, "scale_1");
+    for (double factor : {0.1, 10.0}) {
+      const auto other = run_scaled(example, factor, "scale_other");
+      ASSERT_EQ(other.history.rows.size(), base.history.rows.size());
+      for (const char* column : {"plate_uy", "contact_fy"})
+        for (std::size_t k = 0; k < base.history.rows.size(); ++k) {
+          const double a = base.column(column)[k], b = other.column(column)[k];
+          EXPECT_NEAR(b, a, 1e-7 * std::max(1.0, std::abs(a))) << column << " row " << k;
+        }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace geompm
