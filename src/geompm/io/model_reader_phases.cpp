@@ -431,9 +431,9 @@ void check_point_set_used_once(const yaml::Node& node, const std::string& point_
 
 spec::Phase read_phase(const yaml::Node& node, const Context& context,
                        const std::vector<spec::Phase>& earlier) {
-  const yaml::Map section =
-      node.map({"name", "duration", "time_step", "dynamics", "newton", "gravity", "k0_procedure",
-                "fixities", "prescribed_motion", "grid_motion", "rigid_footings", "loads"});
+  const yaml::Map section = node.map({"name", "duration", "time_step", "dynamics", "newton",
+                                      "gravity", "k0_procedure", "fixities", "prescribed_motion",
+                                      "grid_motion", "rigid_footings", "loads", "surface_loads"});
   spec::Phase phase;
   phase.source = node.where();
   const yaml::Node name = section.required("name");
@@ -487,6 +487,8 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
       check_point_set_used_once(item, load.point_set, phase.motions, phase.loads);
       phase.loads.push_back(std::move(load));
     }
+  if (auto loads = section.find_non_empty("surface_loads"))
+    phase.surface_loads = read_surface_loads(*loads, context);
   return phase;
 }
 

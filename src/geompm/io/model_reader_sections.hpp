@@ -45,6 +45,8 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
 std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
 std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& context);
 std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
+/// A phase's `surface_loads` (model_reader_surface_loads.cpp).
+std::vector<spec::SurfaceLoad> read_surface_loads(const yaml::Node& node, const Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
 

@@ -142,6 +142,19 @@ struct PointSetLoad {
   SourceLocation source;
 };
 
+/// A distributed load on the soil's boundary, the zero level set of its points' density
+/// (docs/theory.md §16): a pressure (normal, positive into the body) or a traction, expressions
+/// of x, y (, z) and the phase time t, on the part of the boundary inside `where` (a box, each
+/// axis optional) of the bodies named (all if empty).
+struct SurfaceLoad {
+  bool pressure = true;  // pressure: components[0]; traction: a vector
+  std::array<std::string, 3> components = {"0", "0", "0"};
+  bool following = false;  // a pressure that turns and stretches with the surface in a step
+  std::array<std::optional<std::array<double, 2>>, 3> where;  // [low, high] per axis
+  std::vector<std::string> bodies;
+  SourceLocation source;
+};
+
 struct Gravity {
   Vec3 acceleration = Vec3::Zero();
   bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
@@ -202,6 +215,7 @@ struct Phase {
   std::vector<GridMotion> grid_motions;
   std::vector<RigidFooting> footings;
   std::vector<PointSetLoad> loads;
+  std::vector<SurfaceLoad> surface_loads;
   SourceLocation source;
 };
 
