@@ -58,6 +58,13 @@ struct Layer {
   SourceLocation source;
 };
 
+/// A body's initial Cauchy stress given directly (tension positive; docs/user-guide.md,
+/// "initial_stress"), each component an expression of x, y (, z): xx, yy, zz, xy, yz, xz.
+struct InitialStress {
+  std::array<std::string, 6> components = {"0", "0", "0", "0", "0", "0"};
+  SourceLocation source;
+};
+
 struct Body {
   std::string name;
   std::string material;       // one material, or ...
@@ -65,6 +72,7 @@ struct Body {
   Region region;
   int points_per_cell = 4;
   std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
+  std::optional<InitialStress> initial_stress;  // none: zero, or the K0 procedure's
   SourceLocation source;
   SourceLocation points_per_cell_source;  // where the count was given (the body if defaulted)
 };
