@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "geompm/io/model_reader.hpp"
@@ -134,6 +137,21 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BlockCase{"plane_strain", "quad4", "plane_strain", false, "following"},
                       BlockCase{"axisymmetric", "quad4", "axisymmetric", false, "following"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SurfaceLoadOutput, WritesTheBoundaryAsPolyDataWithItsNormals) {
+  // The block's top at the step's end: 4 segments (one per cell), normal (0, 1), as boundary.pvd.
+  std::string text = block_model({"vtp", "quad4", "plane_strain", false, "fixed"}, 1);
+  const std::string from = "vtk: {every: 0}";
+  text.replace(text.find(from), from.size(), "vtk: {every: 1, grid: false}");
+  const auto run = testing::run_spec(read_model_from_string(text, "vtp.yaml"), "surface_vtp");
+  ASSERT_TRUE(std::filesystem::exists(run.output / "boundary.pvd"));
+  std::ifstream in(run.output / "vtk" / "boundary_000001.vtp");
+  std::stringstream vtp;
+  vtp << in.rdbuf();
+  EXPECT_NE(vtp.str().find("NumberOfLines=\"4\""), std::string::npos) << vtp.str();
+  EXPECT_NE(vtp.str().find("Name=\"normal\""), std::string::npos);
+  EXPECT_NE(vtp.str().find("\n0 1 0\n"), std::string::npos);
+}
 
 }  // namespace
 }  // namespace geompm

@@ -284,6 +284,12 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
   step.du = system_->dofs().prescribed();
 }
 
+bool writes_boundary(const spec::Model& spec) {
+  if (spec.output.vtk_every <= 0) return false;
+  return std::any_of(spec.phases.begin(), spec.phases.end(),
+                     [](const spec::Phase& phase) { return !phase.surface_loads.empty(); });
+}
+
 StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   StepResult result;
   Step step;
@@ -382,6 +388,10 @@ void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& 
   system_->report(step.du, reactions);
   result.set_reactions = std::move(reactions.point_sets);
   result.footing_reactions = std::move(reactions.structures);
+  if (writes_boundary(model_.spec)) {
+    result.boundary = zero_level_set(LevelSet(grid_, model_.points));
+    move_facets(result.boundary, grid_, displacement_block(dofs, step.du));
+  }
   convect_and_relocate(result, dt, step.dynamic);
   if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
     commit_motions(phase, step);
