@@ -5395,13 +5395,50 @@ def section_ngamma_examples(args, work):
 
 
 # --- driver ----------------------------------------------------------------------------------------
+def section_surface_loads(args, work):
+    # Closed forms asserted to round-off by the unit and verification tests named, so nothing is
+    # run here: the table states what they check and the tolerance each one justifies.
+    lines = []
+    w = lines.append
+    w("## 15. Surface loads on the level set of the points (closed forms)")
+    w("")
+    w("The load acts on the zero level set of the points' density (docs/theory.md §16; seed §3.3, "
+      "§3.5). Asserted in `tests/unit/levelset/` and `tests/verification/test_surface_loads.cpp`, "
+      "`test_initial_stress.cpp`.")
+    w("")
+    w("| case | checked against | tolerance |")
+    w("|---|---|---|")
+    w("| block of points filling cells: φ at nodes (quad4, hex8, axisymmetric) | +1/2, 0 on the free "
+      "surface, −1/2 | 1e-13 |")
+    w("| line / plane cut by tri3, tri6, quad4, tet4, hex8 | on the line, normal, area vector | 1e-12 |")
+    w("| pressure on a tilted line, clipped | −p (chord rotated) | 1e-11 |")
+    w("| pressure on a circular arc, clipped | −p (chord rotated) | its ends' edge interpolation "
+      "error, h² φ_yy / (8 φ_y) each |")
+    w("| following pressure, rigid rotation (2D, 3D) | resultant rotates | 1e-11 |")
+    w("| following pressure, load stiffness (2D, axisymmetric, 3D) | central differences | 1e-8 of "
+      "the largest entry |")
+    w("| confined weightless block, uniform pressure q, one step (quad4, tri3, hex8) | σ_yy = −q, "
+      "σ_xx = ν/(1−ν) σ_yy in every point | 1e-8 q |")
+    w("| the same in four steps (plane strain, axisymmetric) | base reaction = q × width (q R²/2) | "
+      "1e-7 (CSV digits) |")
+    w("| isotropic 66 kPa initial stress under a 66 kPa surcharge (plane strain) | unchanged after "
+      "a step | 1e-8 × 66 |")
+    w("")
+    w("**Reached.** In axisymmetry the points' quadrature of the internal force near the axis is "
+      "not exact, so a uniform stress is in balance with the exact surface load only on the whole "
+      "(base reaction), not point by point (docs/theory.md §16, limitation).")
+    w("")
+    return lines
+
+
 SECTIONS = {"bar": (1, section_bar), "column": (2, section_column), "oedometer": (3, section_oedometer),
             "strip": (4, section_strip), "circular": (7, section_circular),
             "mohr_coulomb_footing": (8, section_mohr_coulomb_footing),
             "frictional": (9, section_frictional), "cylinder": (10, section_cylinder),
             "triangles": (11, section_triangles), "earth_pressure": (12, section_earth_pressure),
             "dilatancy_on_triangles": (13, section_dilatancy_on_triangles),
-            "ngamma_examples": (14, section_ngamma_examples)}
+            "ngamma_examples": (14, section_ngamma_examples),
+            "surface_loads": (15, section_surface_loads)}
 # names for several sections at once
 ALIASES = {"footing": ("strip", "circular", "mohr_coulomb_footing")}
 HEADER = ["# geompm validation", "",

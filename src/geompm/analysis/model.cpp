@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "geompm/analysis/geostatic_stress.hpp"
+#include "geompm/analysis/initial_stress.hpp"
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
@@ -370,7 +371,9 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
     model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
   }
-  // Geostatic stresses of the first phase's K0 procedure (docs/theory.md §10), before any step.
+  // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
+  // (docs/theory.md §10), before any step.
+  apply_initial_stresses(*model);
   apply_k0_procedure(*model);
   return model;
 }

@@ -31,12 +31,14 @@ const std::vector<std::string> newton_columns = {"step",
 }  // namespace
 
 OutputWriter::Positions OutputWriter::read_positions(ByteReader& saved,
-                                                     const std::filesystem::path& dir) {
+                                                     const std::filesystem::path& dir,
+                                                     bool boundary) {
   Positions at;
   saved.get(at.history);
   saved.get(at.newton);
   saved.get(at.points);
   saved.get(at.grid);
+  if (boundary) saved.get(at.boundary);
   saved.get(at.last_values);
   saved.get(at.structures);
   saved.expect_end();
@@ -50,7 +52,9 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir)
     : OutputWriter(model, dir, std::optional<Positions>()) {}
 
 OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir, ByteReader& saved)
-    : OutputWriter(model, dir, std::optional<Positions>(read_positions(saved, dir))) {}
+    : OutputWriter(
+          model, dir,
+          std::optional<Positions>(read_positions(saved, dir, writes_boundary(model.spec)))) {}
 
 // One constructor for both: a resumed run opens the same files in the same order, each cut back
 // to its length at the checkpoint.
@@ -60,6 +64,8 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
       dir_((std::filesystem::create_directories(dir / "vtk"), dir)),
       points_series_(dir / "points.pvd"),
       grid_series_(dir / "grid.pvd"),
+      boundary_series_(dir / "boundary.pvd"),
+      boundary_(writes_boundary(model.spec)),
       recorder_(model),
       columns_(recorder_.columns()),
       history_(resume ? HistoryWriter(dir / "history.csv", columns_, resume->history)
@@ -76,6 +82,7 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
                                  resume->structures.size(), structure_series_.size()));
   for (std::size_t k = 0; k < structure_series_.size(); ++k)
     structure_series_[k].restore(std::move(resume->structures[k]));
+  if (boundary_) boundary_series_.restore(std::move(resume->boundary));
   last_values_ = std::move(resume->last_values);
 }
 
@@ -84,6 +91,8 @@ void OutputWriter::save(ByteWriter& out) const {
   out.put(static_cast<std::uintmax_t>(newton_.size()));
   out.put(points_series_.entries());
   out.put(grid_series_.entries());
+  // Only with the boundary series, so that a model without one keeps its checkpoint's layout.
+  if (boundary_) out.put(boundary_series_.entries());
   out.put(last_values_);
   std::vector<std::vector<std::pair<double, std::string>>> structures;
   for (const PvdSeries& series : structure_series_) structures.push_back(series.entries());
@@ -136,6 +145,25 @@ void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseCon
     write_vtu_mesh(dir_ / name, model_.mesh, model_.mesh.nodes, nodes, cells);
     grid_series_.add(time, name);
   }
+  if (boundary_) write_boundary(step, time, step_number);
+}
+
+// The bodies' boundary at the step's end (StepResult::boundary): segments or triangles with their
+// outward normals and the cells they were found in.
+void OutputWriter::write_boundary(const StepResult& step, double time, int step_number) {
+  std::vector<Vec3> vertices;
+  FieldSet cells;
+  auto& normal = cells.vectors.emplace_back("normal", std::vector<Vec3>{}).second;
+  auto& cell = cells.integers.emplace_back("cell", std::vector<Index>{}).second;
+  const int per_facet = model_.mesh.dim() == 3 ? 3 : 2;
+  for (const SurfaceFacet& facet : step.boundary) {
+    for (int k = 0; k < facet.vertices; ++k) vertices.push_back(facet.x[k]);
+    normal.push_back(facet.normal);
+    cell.push_back(facet.cell);
+  }
+  const std::string name = fmt::format("vtk/boundary_{:06d}.vtp", step_number);
+  write_vtp_facets(dir_ / name, vertices, per_facet, cells);
+  boundary_series_.add(time, name);
 }
 
 std::vector<std::filesystem::path> OutputWriter::plots() {

@@ -1,8 +1,9 @@
 // What a run writes as it goes, into its output directory: the history (history.csv), every
 // Newton iteration (newton.csv), the ParaView series of the points and the grid (points.pvd,
-// grid.pvd, structure_<name>.pvd per structure, vtk/*.vtu) and, at the end, the plots. Everything
-// is flushed step by step, so a run that stops keeps every finished step; a resumed run goes on
-// with the files as they were at its checkpoint (save() / the resuming constructor).
+// grid.pvd, structure_<name>.pvd per structure, vtk/*.vtu), with surface loads the boundary's
+// (boundary.pvd, vtk/*.vtp) and, at the end, the plots. Everything is flushed step by step, so a
+// run that stops keeps every finished step; a resumed run goes on with the files as they were at
+// its checkpoint (save() / the resuming constructor).
 #pragma once
 
 #include <cstdint>
@@ -51,18 +52,22 @@ class OutputWriter {
   struct Positions {
     std::uintmax_t history = 0, newton = 0;  // bytes of history.csv and newton.csv
     std::vector<std::pair<double, std::string>> points, grid;             // the series' entries
+    std::vector<std::pair<double, std::string>> boundary;  // with writes_boundary only
     std::vector<std::vector<std::pair<double, std::string>>> structures;  // one per structure
     std::vector<double> last_values;
   };
-  static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir);
+  static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir,
+                                  bool boundary);
   OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
   void append_history(const std::vector<double>& values);
   void write_points(double time, int step_number);
   void write_structures(double time, int step_number);
+  void write_boundary(const StepResult& step, double time, int step_number);
 
   Model& model_;
   std::filesystem::path dir_;
-  PvdSeries points_series_, grid_series_;
+  PvdSeries points_series_, grid_series_, boundary_series_;
+  bool boundary_;  // writes_boundary(model.spec)
   std::vector<PvdSeries> structure_series_;  // structure_<name>.pvd, one per structure
   HistoryRecorder recorder_;
   std::vector<std::string> columns_;

@@ -305,6 +305,12 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
   step.du = system_->dofs().prescribed();
 }
 
+bool writes_boundary(const spec::Model& spec) {
+  if (spec.output.vtk_every <= 0) return false;
+  return std::any_of(spec.phases.begin(), spec.phases.end(),
+                     [](const spec::Phase& phase) { return !phase.surface_loads.empty(); });
+}
+
 StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   StepResult result;
   Step step;
@@ -407,6 +413,10 @@ void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& 
     if (const auto* rigid = dynamic_cast<const RigidStructure*>(model_.structures[k].get()))
       result.structure_forces[rigid->name()] =
           drive_forces(*rigid, phase.structure_drives[k], dofs, result.reaction, step.t1);
+  if (writes_boundary(model_.spec)) {
+    result.boundary = zero_level_set(LevelSet(grid_, model_.points));
+    move_facets(result.boundary, grid_, displacement_block(dofs, step.du));
+  }
   convect_and_relocate(result, dt, step.dynamic);
   if (result.lost.empty() || model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove)
     commit_motions(phase, step);

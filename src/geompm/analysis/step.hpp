@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geompm/analysis/phase_context.hpp"
+#include "geompm/levelset/zero_level_set.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "geompm/physics/pressure_field.hpp"
 #include "geompm/physics/step_system.hpp"
@@ -47,7 +48,14 @@ struct StepResult {
   std::map<std::string, DriveForces> structure_forces;
   Vec3 gravity = Vec3::Zero();
   std::vector<std::pair<Index, Vec3>> lost;  // points that left the mesh: id, position
+  /// The bodies' boundary, the zero level set of the step's start carried by its displacement to
+  /// its end, where the output writes it (writes_boundary); empty otherwise.
+  std::vector<SurfaceFacet> boundary;
 };
+
+/// Whether the run writes the boundary (boundary.pvd): with ParaView output, in a model with
+/// surface loads.
+bool writes_boundary(const spec::Model& spec);
 
 /// The grid's settings for a model: kinematics, interpolation, empty-cell stiffness, buffer
 /// layers and, per material, the formulation and the mixed points' volume change.

@@ -4,6 +4,8 @@
 
 #include "geompm/boundary/footing_contact.hpp"
 #include "geompm/contact/level_set_contact.hpp"
+#include "geompm/core/expression.hpp"
+#include "geompm/levelset/surface_load.hpp"
 #include "geompm/physics/body_loads.hpp"
 #include "geompm/physics/empty_cell_stiffness.hpp"
 #include "geompm/physics/ghost_penalty.hpp"
@@ -119,6 +121,35 @@ void contacts(StepSystem& system, StepContext& c) {
                                                  c.model.largest_modulus(), system.dofs()));
 }
 
+void surface_loads(StepSystem& system, StepContext& c) {
+  // Pressures and tractions on the zero level set of the bodies' points at the step's start
+  // (seed §3.5, docs/theory.md §16), at the step's end time t1 as point-set loads are.
+  for (const spec::SurfaceLoad& load : c.phase.spec->surface_loads) {
+    std::vector<char> bodies;
+    if (!load.bodies.empty()) {
+      bodies.assign(c.model.spec.bodies.size(), 0);
+      for (const std::string& body : load.bodies)
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+          if (c.model.spec.bodies[b].name == body) bodies[b] = 1;
+    }
+    FacetBox where;
+    where.range = load.where;
+    auto facets = zero_level_set(LevelSet(c.grid, c.model.points, std::move(bodies)), &where);
+    if (facets.empty()) continue;
+    const std::array<Expression, 3> value = {Expression(load.components[0]),
+                                             Expression(load.components[1]),
+                                             Expression(load.components[2])};
+    const double t = c.t1;
+    system.add(std::make_unique<SurfaceLoad>(
+        c.grid, system.dofs(), std::move(facets),
+        load.pressure ? SurfaceLoad::Kind::Pressure : SurfaceLoad::Kind::Traction, load.following,
+        [&](const Vec3& x) {
+          return Vec3(value[0](x.x(), x.y(), x.z(), t), value[1](x.x(), x.y(), x.z(), t),
+                      value[2](x.x(), x.y(), x.z(), t));
+        }));
+  }
+}
+
 void inertia(StepSystem& system, StepContext& c) {
   if (c.dynamic) system.add(std::make_unique<Inertia>(c.grid, system.dofs(), c.newmark));
 }
@@ -129,7 +160,7 @@ using Maker = void (*)(StepSystem&, StepContext&);
 // vectors by.
 constexpr Maker makers[] = {contacts,      material_points, empty_cells,    sparse_node_springs,
                             ghost_penalty, point_motions,   rigid_footings, body_loads,
-                            structures,    inertia};
+                            surface_loads, structures,      inertia};
 
 }  // namespace
 

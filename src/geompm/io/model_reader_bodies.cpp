@@ -168,8 +168,8 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context) {
   std::vector<spec::Body> bodies;
   for (const auto& [name, body_node] : node.entries()) {
     if (name.empty()) body_node.fail("a body needs a name");
-    const yaml::Map entry =
-        body_node.map({"material", "layers", "region", "points_per_cell", "initial_velocity"});
+    const yaml::Map entry = body_node.map(
+        {"material", "layers", "region", "points_per_cell", "initial_velocity", "initial_stress"});
     spec::Body body;
     body.name = name;
     body.source = body_node.where();
@@ -194,6 +194,8 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context) {
     if (auto velocity = entry.find("initial_velocity"))
       body.initial_velocity =
           read_expression_vector(*velocity, context.dimension, velocity_variables, false, "0");
+    if (auto stress = entry.find("initial_stress"))
+      body.initial_stress = read_initial_stress(*stress, context);
     context.bodies.push_back(name);
     bodies.push_back(std::move(body));
   }

@@ -433,7 +433,8 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
                        const std::vector<spec::Phase>& earlier) {
   const yaml::Map section = node.map({"name", "duration", "time_step", "dynamics", "newton",
                                       "gravity", "k0_procedure", "fixities", "prescribed_motion",
-                                      "grid_motion", "rigid_footings", "loads", "structures"});
+                                      "grid_motion", "rigid_footings", "loads", "structures",
+                                      "surface_loads"});
   spec::Phase phase;
   phase.source = node.where();
   const yaml::Node name = section.required("name");
@@ -489,6 +490,8 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
     }
   if (auto structures = section.find_non_empty("structures"))
     phase.structure_drives = read_structure_drives(*structures, context);
+  if (auto loads = section.find_non_empty("surface_loads"))
+    phase.surface_loads = read_surface_loads(*loads, context);
   return phase;
 }
 

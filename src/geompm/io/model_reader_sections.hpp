@@ -43,10 +43,14 @@ struct Context {
 spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory, Context& context);
 std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context);
 spec::Region read_region(const yaml::Node& node, const Context& context);
+/// A body's `initial_stress` (model_reader_initial_stress.cpp).
+spec::InitialStress read_initial_stress(const yaml::Node& node, const Context& context);
 std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
 std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
 std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& context);
 std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
+/// A phase's `surface_loads` (model_reader_surface_loads.cpp).
+std::vector<spec::SurfaceLoad> read_surface_loads(const yaml::Node& node, const Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);
 spec::Numerics read_numerics(const yaml::Node& node);
 // Structures (model_reader_structures.cpp): the top-level list, a phase's drives, a history.

@@ -23,6 +23,11 @@ void write_vtu_mesh(const std::filesystem::path& file, const Mesh& mesh,
                     const std::vector<Vec3>& nodes, const FieldSet& node_fields,
                     const FieldSet& cell_fields);
 
+/// Writes facets - line segments (per_facet 2) or triangles (3), `vertices` facet after facet - as
+/// VTK PolyData (.vtp, ASCII) with cell data `cell_fields` (vtp_writer.cpp).
+void write_vtp_facets(const std::filesystem::path& file, const std::vector<Vec3>& vertices,
+                      int per_facet, const FieldSet& cell_fields);
+
 /// A time series: each add() records (time, file relative to the .pvd) and rewrites the .pvd.
 class PvdSeries {
  public:

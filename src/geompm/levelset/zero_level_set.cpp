@@ -252,6 +252,28 @@ std::vector<SurfaceFacet> zero_level_set(const Mesh& mesh, const std::vector<dou
   return clipped;
 }
 
+void move_facets(std::vector<SurfaceFacet>& facets, const GridSystem& grid, const Vector& nodal) {
+  const Mesh& mesh = grid.mesh();
+  const int dim = grid.dim();
+  for (SurfaceFacet& facet : facets) {
+    const auto nodes = mesh.cell_nodes(facet.cell);
+    Vertex v[3];
+    for (int k = 0; k < facet.vertices; ++k) {
+      const Eigen::VectorXd N = dispatch_cell_type(mesh.cell_type, [&](auto e) {
+        using E = decltype(e);
+        return Eigen::VectorXd(E::shape(facet.xi[k].head<E::dim>()));
+      });
+      v[k].x = facet.x[k];
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        for (int i = 0; i < dim; ++i)
+          v[k].x(i) += N(Index(a)) * nodal(grid.node_to_active()[nodes[a]] * dim + i);
+      facet.x[k] = v[k].x;
+    }
+    const Vec3 area = area_vector(v, facet.vertices);
+    if (area.norm() > 0.0) facet.normal = area.normalized();
+  }
+}
+
 std::vector<SurfaceFacet> zero_level_set(const LevelSet& phi, const FacetBox* box) {
   const GridSystem& grid = phi.grid();
   const Mesh& mesh = grid.mesh();

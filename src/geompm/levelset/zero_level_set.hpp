@@ -55,6 +55,11 @@ struct FacetBox {
 /// `box` if given (exactly: a clipped triangle is split into triangles).
 std::vector<SurfaceFacet> zero_level_set(const LevelSet& phi, const FacetBox* box = nullptr);
 
+/// Moves the facets with a displacement of the grid's active nodes (`nodal`: dim per active node,
+/// node-major): each vertex by its cell's shape functions; the normal becomes the moved facet's.
+/// For output: the boundary of the step's start carried to its end.
+void move_facets(std::vector<SurfaceFacet>& facets, const GridSystem& grid, const Vector& nodal);
+
 /// As zero_level_set, from nodal values per mesh node (`node_phi`) on `mesh`: for tests and for
 /// a level set given in closed form. `cells`: the cells to cut (all if empty).
 std::vector<SurfaceFacet> zero_level_set(const Mesh& mesh, const std::vector<double>& node_phi,

@@ -58,6 +58,13 @@ struct Layer {
   SourceLocation source;
 };
 
+/// A body's initial Cauchy stress given directly (tension positive; docs/user-guide.md,
+/// "initial_stress"), each component an expression of x, y (, z): xx, yy, zz, xy, yz, xz.
+struct InitialStress {
+  std::array<std::string, 6> components = {"0", "0", "0", "0", "0", "0"};
+  SourceLocation source;
+};
+
 struct Body {
   std::string name;
   std::string material;       // one material, or ...
@@ -65,6 +72,7 @@ struct Body {
   Region region;
   int points_per_cell = 4;
   std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
+  std::optional<InitialStress> initial_stress;  // none: zero, or the K0 procedure's
   SourceLocation source;
   SourceLocation points_per_cell_source;  // where the count was given (the body if defaulted)
 };
@@ -191,6 +199,19 @@ struct StructureDrive {
   SourceLocation source;
 };
 
+/// A distributed load on the soil's boundary, the zero level set of its points' density
+/// (docs/theory.md §16): a pressure (normal, positive into the body) or a traction, expressions
+/// of x, y (, z) and the phase time t, on the part of the boundary inside `where` (a box, each
+/// axis optional) of the bodies named (all if empty).
+struct SurfaceLoad {
+  bool pressure = true;  // pressure: components[0]; traction: a vector
+  std::array<std::string, 3> components = {"0", "0", "0"};
+  bool following = false;  // a pressure that turns and stretches with the surface in a step
+  std::array<std::optional<std::array<double, 2>>, 3> where;  // [low, high] per axis
+  std::vector<std::string> bodies;
+  SourceLocation source;
+};
+
 struct Gravity {
   Vec3 acceleration = Vec3::Zero();
   bool ramp = false;  // ramp linearly from 0 over the phase (quasi-static load steps)
@@ -252,6 +273,7 @@ struct Phase {
   std::vector<RigidFooting> footings;
   std::vector<PointSetLoad> loads;
   std::vector<StructureDrive> structure_drives;  // structures not listed: free
+  std::vector<SurfaceLoad> surface_loads;
   SourceLocation source;
 };
 
