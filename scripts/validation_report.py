@@ -5431,6 +5431,41 @@ def section_surface_loads(args, work):
     return lines
 
 
+def section_contact(args, work):
+    # Closed forms asserted by tests/unit/contact/ and tests/verification/test_contact.cpp; the
+    # rigid strip through contact as measured (examples/structures/, docs/theory.md §18).
+    lines = []
+    w = lines.append
+    w("## 17. Contact of structures with the soil's level set")
+    w("")
+    w("Lagrange multipliers on the structure's surface, one set per background cell it crosses, "
+      "semi-smooth complementarity equations (docs/theory.md §18). Asserted in "
+      "`tests/unit/contact/` and `tests/verification/test_contact.cpp`.")
+    w("")
+    w("| case | checked against | result | verdict |")
+    w("|---|---|---|---|")
+    w("| contact law: roots, derivatives | KKT conditions, central differences | 1e-6 | reached |")
+    w("| block on springs under friction, c = 10, 100, 1000 | shear = μ N, stick below, open in "
+      "tension | 1e-10 | reached |")
+    w("| patch test, one step (`contact_patch.yaml`, F = 25 kN/m) | σ_yy = −F/B in every point; "
+      "confined Hencky settlement | 1e-9 F | reached |")
+    w("| patch test, four steps (F = 100 kN/m) | confined Hencky settlement; contact force = F | "
+      "1e-4, 1e-9 | reached |")
+    w("| plate dragged under friction (`contact_friction.yaml`, μ = 0.3) | shear = μ F once "
+      "sliding | 1e-9 | reached |")
+    w("| scale c a decade up and down (both examples) | the same histories | 1e-7 | reached |")
+    w("| smooth rigid strip on Tresca clay through contact (mixed p–u, h = B/20) | Prandtl 5.14 "
+      "at 0.1 B, within 5 % | q/s_u 5.07 at 0.023 B, 5.21 at 0.029 B; stops at 0.038 B (Newton "
+      "does not converge under the footing's edge) | **not reached** |")
+    w("")
+    w("The points' stresses in the patch test after the first step differ from −F/B by up to "
+      "1.7 %: the block's compressed points no longer fill their cells exactly and integrate the "
+      "stress with that error (MPM's quadrature, not the contact's; the contact force and the "
+      "settlement are exact).")
+    w("")
+    return lines
+
+
 SECTIONS = {"bar": (1, section_bar), "column": (2, section_column), "oedometer": (3, section_oedometer),
             "strip": (4, section_strip), "circular": (7, section_circular),
             "mohr_coulomb_footing": (8, section_mohr_coulomb_footing),
@@ -5438,7 +5473,7 @@ SECTIONS = {"bar": (1, section_bar), "column": (2, section_column), "oedometer":
             "triangles": (11, section_triangles), "earth_pressure": (12, section_earth_pressure),
             "dilatancy_on_triangles": (13, section_dilatancy_on_triangles),
             "ngamma_examples": (14, section_ngamma_examples),
-            "surface_loads": (15, section_surface_loads)}
+            "surface_loads": (15, section_surface_loads), "contact": (17, section_contact)}
 # names for several sections at once
 ALIASES = {"footing": ("strip", "circular", "mohr_coulomb_footing")}
 HEADER = ["# geompm validation", "",

@@ -211,6 +211,20 @@ void OutputWriter::write_structures(double time, int step_number) {
     for (std::size_t a = 0; a < x.size(); ++a)
       displacement[a] = x[a] - structure.initial_nodes()[a];
     nodes.vectors.emplace_back("displacement", std::move(displacement));
+    // Its contact with the soil (docs/theory.md §18) on its surface's nodes.
+    std::vector<std::array<Index, 4>> facet_nodes;
+    std::vector<int> facet_count;
+    for (const Facet& facet : structure.mesh().surface()) {
+      facet_nodes.push_back(facet.nodes);
+      facet_count.push_back(facet.num_nodes);
+    }
+    std::vector<double> pressure, shear;
+    std::vector<Index> state;
+    model_.contacts[k].nodal_fields(facet_nodes, facet_count, static_cast<Index>(x.size()),
+                                    pressure, shear, state);
+    nodes.scalars.emplace_back("contact_pressure", std::move(pressure));
+    nodes.scalars.emplace_back("contact_shear", std::move(shear));
+    nodes.integers.emplace_back("contact_state", std::move(state));
     const std::string name =
         fmt::format("vtk/structure_{}_{:06d}.vtu", structure.name(), step_number);
     write_vtu_mesh(dir_ / name, structure.mesh().mesh(), x, nodes, cells);

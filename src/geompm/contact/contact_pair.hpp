@@ -4,6 +4,7 @@
 // multipliers (the contact pressure and shear over the scale c) and its state.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,20 @@ struct ContactPair {
   std::vector<double> pressure, shear;
   std::vector<ContactState> state;
   std::vector<char> in_grid;
+  /// Per piece: the structure's surface facet it is part of, and its length or area.
+  std::vector<Index> piece_facet;
+  std::vector<double> piece_measure;
   /// The force the soil exerts on the structure through the contact, and its moment about the
   /// origin (z only in 2D), at the last converged step.
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+
+  /// Per node of the structure's mesh (for ParaView): the contact pressure and shear, area-
+  /// weighted over the pieces of the surface facets around it, and the state, the most engaged
+  /// of theirs (0 open, 1 stick, 2 slip); zero away from the surface.
+  void nodal_fields(const std::vector<std::array<Index, 4>>& facet_nodes,
+                    const std::vector<int>& facet_node_count, Index num_nodes,
+                    std::vector<double>& pressure, std::vector<double>& shear,
+                    std::vector<Index>& state) const;
 
   void save(ByteWriter& out) const;
   void load(ByteReader& in);

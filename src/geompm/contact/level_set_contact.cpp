@@ -52,6 +52,12 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
     pair_.shear.assign(all_.size(), 0.0);
     pair_.state.assign(all_.size(), ContactState::Open);
     pair_.in_grid.assign(all_.size(), 0);
+    pair_.piece_facet.clear();
+    pair_.piece_measure.clear();
+    for (const ContactSegment& piece : all_) {
+      pair_.piece_facet.push_back(piece.facet);
+      pair_.piece_measure.push_back(piece.measure);
+    }
   }
   for (const std::vector<Index>& group : group_pieces()) {
     Kinematics k;
