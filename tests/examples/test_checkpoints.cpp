@@ -255,6 +255,22 @@ TEST_F(Checkpoints, ARoughRigidFootingResumesWithItsStickAnchors) {
   EXPECT_TRUE(Contains(resume_and_compare(), "phase 'push', step 2,"));
 }
 
+// A surface load (docs/theory.md §16) writes the boundary series (boundary.pvd), which its
+// checkpoint carries: killed in its second checkpoint (step 4), it resumes from step 2 and ends
+// with the same boundary files as a run that never stopped.
+TEST_F(Checkpoints, ASurfaceLoadResumesWithItsBoundarySeries) {
+  const std::string model = example_text("surface_load/strip_surcharge.yaml");
+  run_reference(model);
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "2"});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  EXPECT_TRUE(Contains(resume_and_compare(), "phase 'surcharge', step 2,"));
+  const fs::path reference = work() / "reference", resumed = work() / "killed";
+  EXPECT_EQ(read_text(resumed / "boundary.pvd"), read_text(reference / "boundary.pvd"));
+  EXPECT_EQ(read_text(resumed / "vtk" / "boundary_000005.vtp"),
+            read_text(reference / "vtk" / "boundary_000005.vtp"));
+}
+
 // A checkpoint that cannot be used: exit 2, a message naming the file and the problem, and
 // nothing changed in the output directory.
 class BadCheckpoints : public GeompmRunTest<> {

@@ -431,12 +431,16 @@ std::string describe_model(const Model& model) {
         spec.kinematics == Kinematics::Axisymmetric ? " per radian" : "");
   for (const auto& phase : spec.phases)
     out += fmt::format(
-        "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}{}\n", phase.name, phase.duration,
+        "phase      {}: duration {:g}, dt {:g} [{:g}, {:g}], {}{}{}\n", phase.name, phase.duration,
         phase.time_step.initial, phase.time_step.min, phase.time_step.max,
         phase.dynamics.quasi_static ? std::string("quasi-static")
                                     : fmt::format("Newmark beta={:g} gamma={:g}",
                                                   phase.dynamics.beta, phase.dynamics.gamma),
-        phase.k0_procedure ? ", starts from the K0 procedure's geostatic stresses" : "");
+        phase.k0_procedure ? ", starts from the K0 procedure's geostatic stresses" : "",
+        phase.surface_loads.empty()
+            ? std::string()
+            : fmt::format(", {} surface load{} on the bodies' boundary", phase.surface_loads.size(),
+                          phase.surface_loads.size() > 1 ? "s" : ""));
   return out;
 }
 
