@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "geompm/io/model_reader.hpp"
 #include "model_reader_support.hpp"
 
@@ -199,6 +201,22 @@ TEST(ModelReaderStructures, RefuseWhatAxisymmetryCannotDo) {
     EXPECT_NE(std::string(e.what()).find("its position's x must be 0"), std::string::npos)
         << e.what();
   }
+}
+
+// The example of docs/user-guide.md, "structures", after the model's first sections, reads.
+TEST(ModelReaderStructures, ReadsTheExampleOfTheUserGuide) {
+  std::ifstream guide(std::string(GEOMPM_SOURCE_DIR) + "/docs/user-guide.md");
+  const std::string text((std::istreambuf_iterator<char>(guide)), std::istreambuf_iterator<char>());
+  const std::size_t heading = text.find("### structures");
+  ASSERT_NE(heading, std::string::npos);
+  const std::size_t begin = text.find("```yaml\n", heading) + 8;
+  const std::size_t end = text.find("```", begin);
+  const spec::Model m = read_model_from_string(
+      kHeader + kMesh + kMaterials + kBodies + text.substr(begin, end - begin), "guide.yaml");
+  ASSERT_EQ(m.structures.size(), 1u);
+  EXPECT_EQ(m.structures[0].weight, 6.0);
+  EXPECT_EQ(m.phases[0].structure_drives[0].motion[1], "-0.4*t");
+  EXPECT_EQ(m.output.histories[0].name, "reaction_pipe_y");
 }
 
 }  // namespace
