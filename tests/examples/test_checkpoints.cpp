@@ -23,6 +23,7 @@
 
 #include "cli_support.hpp"
 #include "example_text.hpp"
+#include "geompm/io/checkpoint_file.hpp"
 #include "process_support.hpp"
 #include "read_vtu.hpp"
 
@@ -347,7 +348,8 @@ TEST_F(BadCheckpoints, AnotherFormatVersion) {
         const std::uint32_t version = 99;
         std::memcpy(b.data() + 8, &version, sizeof version);
       },
-      "checkpoint format version 99; this geompm (" GEOMPM_VERSION ") reads format version 1");
+      "checkpoint format version 99; this geompm (" GEOMPM_VERSION ") reads format version " +
+          std::to_string(geompm::checkpoint_format_version));
 }
 
 TEST_F(BadCheckpoints, NoCheckpoint) {
