@@ -125,6 +125,36 @@ TEST(StructuresRun, TakeTheirMassFromAWeightAndTheGravity) {
   }
 }
 
+// Axisymmetry: a spudcan on the axis, pushed down; its weight per radian is held by the drive,
+// its radial motion and rotation by axisymmetry.
+TEST(StructuresRun, AxisymmetricSpudcanHoldsItsWeightPerRadian) {
+  std::string text = kModel;
+  text.replace(text.find("plane_strain"), 12, "axisymmetric");
+  const std::string pipe = "shape: {type: pipe, diameter: 0.8, position: [2, 3], cell_size: 0.2}";
+  text.replace(text.find(pipe), pipe.size(),
+               "shape: {type: spudcan, diameter: 2, tip_angle: 150, shoulder: 0.2, position: [0, "
+               "2.5]}");
+  text.replace(text.find("reference_point: [2.3, 3]"), 25, "reference_point: [0, 2.6]");
+  const auto replace = [&text](const std::string& from, const std::string& to) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("pipe: {displacement: [\"0.1*t\", \"-0.2*t\"], rotation: \"0.4*t\"}",
+          "pipe: {displacement: [~, \"-0.2*t\"]}");
+  replace("pipe: {velocity: [0, \"-0.2\"], angular_velocity: 0}",
+          "pipe: {velocity: [0, \"-0.2\"]}");
+  testing::ModelRun run =
+      testing::run_spec(read_model_from_string(text, "axi.yaml"), "structures_axi");
+  const auto fy = run.column("reaction_pipe_y"), uy = run.column("displacement_pipe_y");
+  const auto rz = run.column("rotation_pipe_z"), x = run.column("position_pipe_x");
+  for (std::size_t k = 1; k < fy.size(); ++k) {
+    EXPECT_NEAR(fy[k], 5.0 * 10.0, 1e-9);  // the mass is per radian, as every mass
+    EXPECT_NEAR(uy[k], -0.2 * run.column("time")[k], 1e-9);
+    EXPECT_EQ(rz[k], 0.0);
+    EXPECT_EQ(x[k], 0.0);
+  }
+}
+
 TEST(StructuresRun, AreDescribedByCheck) {
   const std::unique_ptr<Model> model =
       build_model(read_model_from_string(kModel, "structures.yaml"));

@@ -203,6 +203,45 @@ TEST(ModelReaderStructures, RefuseWhatAxisymmetryCannotDo) {
   }
 }
 
+// 3D: six components, rotations and moments as lists of three; a 3D plate needs its breadth.
+TEST(ModelReaderStructures, ReadsThreeDimensionalDrives) {
+  const std::string model = R"m(analysis: {kinematics: 3d}
+mesh:
+  generate: {cell: hex8, x: {length: 1, cells: 1}, y: {length: 1, cells: 1}, z: {length: 1, cells: 1}}
+materials:
+  soil: {model: linear_elastic, E: 1000, nu: 0.3, density: 1}
+bodies:
+  ground: {material: soil, region: all}
+structures:
+  - name: pile
+    shape: {type: plate, width: 0.1, length: 2, tip: 0.1, breadth: 0.5, position: [0.5, 0.5, 2]}
+    mass: 1
+phases:
+  - name: drive
+    time_step: 0.1
+    structures:
+      pile: {displacement: [0, 0, "-t"], rotation: [0, ~, "0.1*t"], moment: [~, 1, ~]}
+)m";
+  const spec::Model m = read_model_from_string(model, "m.yaml");
+  const spec::StructureDrive& d = m.phases[0].structure_drives.at(0);
+  EXPECT_EQ(d.motion[2], "-t");
+  EXPECT_EQ(d.motion[3], "0");
+  EXPECT_EQ(d.motion[4], "");
+  EXPECT_EQ(d.motion[5], "0.1*t");
+  EXPECT_EQ(d.load[4], "1");
+  EXPECT_EQ(m.structures[0].shape->dimensions.at("breadth"), 0.5);
+  std::string no_breadth = model;
+  no_breadth.erase(no_breadth.find(" breadth: 0.5,"), 14);
+  try {
+    read_model_from_string(no_breadth, "m.yaml");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("structures[0].shape.breadth: missing required key"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // The example of docs/user-guide.md, "structures", after the model's first sections, reads.
 TEST(ModelReaderStructures, ReadsTheExampleOfTheUserGuide) {
   std::ifstream guide(std::string(GEOMPM_SOURCE_DIR) + "/docs/user-guide.md");
