@@ -25,10 +25,12 @@ struct SystemForces {
   Vector inertia;   // M a
   Vector external;  // f_ext: gravity and applied loads
 
+  /// Zeroes the sums, keeping their storage from one Newton evaluation to the next.
   void reset(Index size) {
-    internal = Vector::Zero(size);
-    inertia = Vector::Zero(size);
-    external = Vector::Zero(size);
+    for (Vector* v : {&internal, &inertia, &external}) {
+      if (v->size() != size) v->resize(size);
+      v->setZero();
+    }
   }
 };
 

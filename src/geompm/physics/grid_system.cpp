@@ -23,6 +23,7 @@ GridSystem::GridSystem(const Mesh& mesh, const MeshTopology& topology,
   averaging_ = std::any_of(settings_.volume_average.begin(), settings_.volume_average.end(),
                            [](char a) { return a; });
   interpolation_ = make_interpolation(settings_.interpolation, mesh, settings_.kinematics);
+  wide_stencil_ = interpolation_->wide();
 }
 
 Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const {
@@ -165,28 +166,30 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   union_start_.clear();
   union_nodes_.clear();
   if (wide_stencil() && averaging_) build_averaged_stencil_unions(points);
-  map_to_nodes(points);
+  map_to_nodes<E>(points);
 }
 
+template <class E>
 void GridSystem::map_to_nodes(const MaterialPoints& points) {
+  constexpr int dim = E::dim;
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_nodes = static_cast<Index>(active_nodes_.size());
   mass_ = Vector::Zero(n_nodes);
   velocity_ = Vector::Zero(std::size_t(n_nodes) * dim_);
   acceleration_ = Vector::Zero(std::size_t(n_nodes) * dim_);
   for (Index p = 0; p < points.size(); ++p)
-    for_each_weight(points, p, [&](Index node, double N) {
+    for_each_weight_typed<E::nodes>(points, p, [&](Index node, double N) {
       const double w = points.mass[p] * N;
       mass_(node) += w;
-      for (int i = 0; i < dim_; ++i) {
-        velocity_(node * dim_ + i) += w * points.velocity[p](i);
-        acceleration_(node * dim_ + i) += w * points.acceleration[p](i);
+      for (int i = 0; i < dim; ++i) {
+        velocity_(node * dim + i) += w * points.velocity[p](i);
+        acceleration_(node * dim + i) += w * points.acceleration[p](i);
       }
     });
   const double tiny = n_nodes > 0 ? 1e-14 * std::max(mass_.maxCoeff(), 0.0) : 0.0;
   for (Index a = 0; a < n_nodes; ++a)
-    for (int i = 0; i < dim_; ++i) {
-      const Index d = a * dim_ + i;
+    for (int i = 0; i < dim; ++i) {
+      const Index d = a * dim + i;
       if (mass_(a) > tiny) {
         velocity_(d) /= mass_(a);
         acceleration_(d) /= mass_(a);
@@ -240,13 +243,21 @@ void GridSystem::build_averaged_stencil_unions(const MaterialPoints& points) {
 
 void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
                          const Vector& acceleration, double dt, bool dynamic) const {
-  const int dim = dim_;
+  dispatch_cell_type(mesh_.cell_type, [&](auto e) {
+    convect_typed<decltype(e)>(points, du, velocity, acceleration, dt, dynamic);
+  });
+}
+
+template <class E>
+void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
+                               const Vector& acceleration, double dt, bool dynamic) const {
+  constexpr int dim = E::dim;
   const Index n_points = points.size();
 #pragma omp parallel for schedule(static) if (n_points > 4096)
   for (Index p = 0; p < n_points; ++p) {
     // Eq. 7.1 with the point's weights of this step (cell or wide stencil).
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero(), a = Vec3::Zero();
-    for_each_weight(points, p, [&](Index node, double N) {
+    for_each_weight_typed<E::nodes>(points, p, [&](Index node, double N) {
       for (int i = 0; i < dim; ++i) {
         dx(i) += N * du(node * dim + i);
         dv(i) += N * (velocity(node * dim + i) - velocity_(node * dim + i));

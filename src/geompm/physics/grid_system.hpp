@@ -128,7 +128,7 @@ class GridSystem {
 
   // --- how points see the grid -----------------------------------------------------------------
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
-  bool wide_stencil() const { return interpolation_->wide(); }
+  bool wide_stencil() const { return wide_stencil_; }
   /// Point p's shape values (nen) and reference gradients (nen x dim, column-major) in its cell.
   const double* cell_shape(Index p) const { return shape_.data() + std::size_t(p) * nen_; }
   const double* cell_gradients(Index p) const {
@@ -157,7 +157,14 @@ class GridSystem {
  private:
   template <class E>
   void initialise_typed(MaterialPoints& points);
+  template <class E>
   void map_to_nodes(const MaterialPoints& points);
+  template <class E>
+  void convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
+                     const Vector& acceleration, double dt, bool dynamic) const;
+  /// for_each_weight with the cell's node count known at compile time.
+  template <int nen, class F>
+  void for_each_weight_typed(const MaterialPoints& points, Index p, F&& f) const;
   void build_averaged_stencil_unions(const MaterialPoints& points);
   void colour_active_cells();
 
@@ -182,6 +189,7 @@ class GridSystem {
   Vector mass_, velocity_, acceleration_;
 
   std::unique_ptr<Interpolation> interpolation_;
+  bool wide_stencil_ = false;  // interpolation_->wide(), asked once: it is asked per point
   // Wide stencils (DDMP, GIMP; DDMP's weights are the cell's shape values, zero outside it).
   WideStencils wide_;
   // With the volume average: per active cell ci, the union of its averaged points' stencils
@@ -198,6 +206,17 @@ void GridSystem::for_each_weight(const MaterialPoints& points, Index p, F&& f) c
   }
   const auto nodes = mesh_.cell_nodes(points.cell[p]);
   for (int a = 0; a < nen_; ++a) f(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a]);
+}
+
+template <int nen, class F>
+void GridSystem::for_each_weight_typed(const MaterialPoints& points, Index p, F&& f) const {
+  if (wide_stencil_) {
+    for (Index a = wide_.start[p]; a < wide_.start[p + 1]; ++a) f(wide_.nodes[a], wide_.N[a]);
+    return;
+  }
+  const Index* nodes = mesh_.cell_nodes(points.cell[p]).data();
+  const double* N = shape_.data() + std::size_t(p) * nen;
+  for (int a = 0; a < nen; ++a) f(node_to_active_[nodes[a]], N[a]);
 }
 
 }  // namespace geompm

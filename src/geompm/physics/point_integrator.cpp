@@ -54,13 +54,15 @@ void PointIntegrator::attach(const SparseMatrix& pattern) {
     const auto nodes = grid_.mesh().cell_nodes(grid_.active_cells()[ci]);
     std::array<Index, 27> active{};
     for (int a = 0; a < nen_; ++a) active[a] = node_to_active[nodes[a]];
+    std::array<Index, 27 * 4> free{};  // per local unknown: its free index (-1: constrained)
+    for (int l = 0; l < m; ++l) free[l] = dofs_.free_index(local_dof(active, nen_, l));
     for (int lc = 0; lc < m; ++lc) {
-      const Index col = dofs_.free_index(local_dof(active, nen_, lc));
+      const Index col = free[lc];
       if (col < 0) continue;
       const int* begin = pattern.innerIndexPtr() + pattern.outerIndexPtr()[col];
       const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[col + 1];
       for (int lr = 0; lr < m; ++lr) {
-        const Index row = dofs_.free_index(local_dof(active, nen_, lr));
+        const Index row = free[lr];
         if (row < 0) continue;
         const int* at = std::lower_bound(begin, end, row);
         scatter_[(std::size_t(ci) * m + lc) * m + lr] =

@@ -3,10 +3,13 @@
 // p-u formulation (docs/theory.md §11, with the pressure stabilisation of eqs. 11.5 and 11.9-11.10)
 // and with its cell's averaged volume change where asked (F-bar, §12). Cells are assembled in
 // parallel, one colour at a time (no two cells of a colour share a node), each point by one
-// thread, so the sums do not depend on the thread count; points with a wide stencil (DDMP, GIMP)
-// are assembled one after the other. Cell terms (the empty-cell stiffness) and point terms (a
-// prescribed motion's springs, a footing's contact) are assembled with the points, into the same
-// local vector and matrix (physics/local_terms.hpp).
+// thread, so the sums do not depend on the thread count. Points with a wide stencil (DDMP, GIMP,
+// any stencil an Interpolation builds) are integrated in parallel too, in chunks of cells, and
+// scattered in point order, which again does not depend on the thread count. Both loops call the
+// same point kernel (physics/point_kernel.hpp); the cell loop has the cell's node count at compile
+// time (fixed-size matrices), a wide stencil its size at run time. Cell terms (the empty-cell
+// stiffness) and point terms (a prescribed motion's springs, a footing's contact) are assembled
+// with the points, into the same local vector and matrix (physics/local_terms.hpp).
 #pragma once
 
 #include <memory>
