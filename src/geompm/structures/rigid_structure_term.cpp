@@ -67,6 +67,9 @@ DriveForces drive_forces(const RigidStructure& structure, const StructureDrive& 
     const Index d = structure.dof(dofs, k);
     q(k) = dofs.constrained(d) ? reaction(d) : load[k];
   }
+  // Axisymmetry holds the radial motion and the rotation by symmetry, not by a drive: the net
+  // radial force of a body of revolution is zero, whatever its per-radian share at x.
+  if (structure.kinematics() == Kinematics::Axisymmetric) q(0) = q(2) = 0.0;
   DriveForces f;
   if (structure.components() == 3) {
     f.force = Vec3(q(0), q(1), 0.0);

@@ -147,8 +147,11 @@ TEST(StructuresRun, AxisymmetricSpudcanHoldsItsWeightPerRadian) {
       testing::run_spec(read_model_from_string(text, "axi.yaml"), "structures_axi");
   const auto fy = run.column("reaction_pipe_y"), uy = run.column("displacement_pipe_y");
   const auto rz = run.column("rotation_pipe_z"), x = run.column("position_pipe_x");
+  const auto fx = run.column("reaction_pipe_x"), mz = run.column("moment_pipe_z");
   for (std::size_t k = 1; k < fy.size(); ++k) {
     EXPECT_NEAR(fy[k], 5.0 * 10.0, 1e-9);  // the mass is per radian, as every mass
+    EXPECT_EQ(fx[k], 0.0);                 // held by symmetry, not by the drive
+    EXPECT_EQ(mz[k], 0.0);
     EXPECT_NEAR(uy[k], -0.2 * run.column("time")[k], 1e-9);
     EXPECT_EQ(rz[k], 0.0);
     EXPECT_EQ(x[k], 0.0);
