@@ -79,6 +79,38 @@ TEST(RigidStructure, WeighsItsUnknownsAsTheLinearisedRigidMotionAndMovesExactly)
   EXPECT_NEAR(n.norm(), 1.0, 1e-14);
 }
 
+TEST(RigidStructure, WeighsItsSixUnknownsIn3DAsTheRotationVector) {
+  RigidStructure s("box", block(Kinematics::ThreeD), 1.0, Vec3(1, 0.5, 0));
+  DofMap dofs;
+  s.add_unknowns(dofs);
+  ASSERT_EQ(dofs.size(), 6);
+  Vector du(6);
+  du << 0.01, -0.02, 0.03, 2e-4, -3e-4, 5e-4;
+  const double theta = du.tail<3>().norm();
+  const std::vector<Vec3> before = s.mesh().nodes();
+  std::vector<Vec3> linear;
+  std::vector<DofWeight> weights;
+  for (const Vec3& x : before) {
+    s.displacement_weights(dofs, x, 0, weights);
+    ASSERT_EQ(weights.size(), 6u);
+    Vec3 u = Vec3::Zero();
+    for (const DofWeight& w : weights) u += w.coefficient * du(w.dof);
+    linear.push_back(u);
+    // The rotations' weights are e_j x (x - c): u = t + theta x (x - c).
+    const Vec3 expected = du.head<3>() + Vec3(du.tail<3>()).cross(x - Vec3(1, 0.5, 0));
+    EXPECT_NEAR((u - expected).norm(), 0.0, 1e-16);
+  }
+  s.commit(dofs, du);
+  for (std::size_t a = 0; a < before.size(); ++a) {
+    // The exact pose differs from the linearised one by at most theta^2 |x - c| / 2.
+    const double gap = (s.mesh().nodes()[a] - before[a] - linear[a]).norm();
+    EXPECT_LE(gap, 0.5 * theta * theta * (before[a] - Vec3(1, 0.5, 0)).norm() * (1 + 1e-6));
+    EXPECT_GT(gap, 0.0);
+  }
+  EXPECT_NEAR((s.rotation() - Vec3(du.tail<3>())).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((s.displacement() - Vec3(du.head<3>())).norm(), 0.0, 1e-15);
+}
+
 TEST(RigidStructure, AxisymmetryMovesOnlyAlongTheAxis) {
   RigidStructure s("disc", block(Kinematics::Axisymmetric), 1.0);
   EXPECT_DOUBLE_EQ(s.reference_point().x(), 0.0);  // on the axis
