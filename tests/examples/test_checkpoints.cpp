@@ -23,6 +23,7 @@
 
 #include "cli_support.hpp"
 #include "example_text.hpp"
+#include "geompm/io/checkpoint_file.hpp"
 #include "process_support.hpp"
 #include "read_vtu.hpp"
 
@@ -271,6 +272,47 @@ TEST_F(Checkpoints, ASurfaceLoadResumesWithItsBoundarySeries) {
             read_text(reference / "vtk" / "boundary_000005.vtp"));
 }
 
+// A structure carries its pose, its pose at the phase start and the velocity and acceleration of
+// its unknowns from step to step (docs/theory.md §17.6), and the step solver the rate of its
+// unknowns for Newton's extrapolated start: a plate free in every component beside the vibrating
+// bar, pushed and turned by its drive's loads under Newmark, killed in its third checkpoint,
+// resumes from step 20 and ends as a run that never stopped (its histories too).
+TEST_F(Checkpoints, AStructureResumesWithItsPoseAndMotion) {
+  std::string model = example_text("vibrating_bar/vibrating_bar.yaml");
+  model = replace_once(model, "phases:\n",
+                       "structures:\n"
+                       "  - name: plate\n"
+                       "    shape: {type: footing, width: 1, height: 0.5, position: [5, 3], "
+                       "cell_size: 0.25}\n"
+                       "    density: 2\n"
+                       "    reference_point: [4.5, 3]\n"
+                       "phases:\n");
+  model = replace_once(model, "      - {boundary: top, fix: [y]}\n",
+                       "      - {boundary: top, fix: [y]}\n"
+                       "    structures:\n"
+                       "      plate: {force: [\"0.01*sin(t)\", -0.02], moment: 0.005}\n");
+  // Newton's extrapolated start: the plate's unknowns' last rate is state too.
+  model = replace_once(model, "displacement_tolerance: 1.0e-10}",
+                       "displacement_tolerance: 1.0e-10, predictor: extrapolated}");
+  model = replace_once(model, "    - {quantity: kinetic_energy}\n",
+                       "    - {quantity: kinetic_energy}\n"
+                       "    - {quantity: displacement, structure: plate, component: x}\n"
+                       "    - {quantity: displacement, structure: plate, component: y}\n"
+                       "    - {quantity: rotation, structure: plate, component: z}\n");
+  run_reference(model);
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(3, {"--checkpoint-every", "10"});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  EXPECT_TRUE(Contains(resume_and_compare(), "phase 'vibration', step 20,"));
+  EXPECT_EQ(read_text(work() / "killed" / "structure_plate.pvd"),
+            read_text(work() / "reference" / "structure_plate.pvd"));
+  // It moved: pushed down and turned.
+  const Csv history = read_csv(work() / "reference" / "history.csv");
+  ASSERT_TRUE(history.problem.empty()) << history.problem;
+  EXPECT_LT(history.column("displacement_plate_y").back(), -1.0);
+  EXPECT_GT(history.column("rotation_plate_z").back(), 0.1);
+}
+
 // A checkpoint that cannot be used: exit 2, a message naming the file and the problem, and
 // nothing changed in the output directory.
 class BadCheckpoints : public GeompmRunTest<> {
@@ -326,7 +368,8 @@ TEST_F(BadCheckpoints, AnotherFormatVersion) {
         const std::uint32_t version = 99;
         std::memcpy(b.data() + 8, &version, sizeof version);
       },
-      "checkpoint format version 99; this geompm (" GEOMPM_VERSION ") reads format version 1");
+      "checkpoint format version 99; this geompm (" GEOMPM_VERSION ") reads format version " +
+          std::to_string(geompm::checkpoint_format_version));
 }
 
 TEST_F(BadCheckpoints, NoCheckpoint) {

@@ -38,7 +38,7 @@ double strain_energy(const Model& model) {
 
 namespace {
 
-// A structure's history (docs/theory.md §17.5): what its drive exerts (reaction, moment) at the
+// A structure's history (docs/theory.md §17.4): what its drive exerts (reaction, moment) at the
 // last converged step, its motion since the start of the analysis or of the phase, where its
 // reference point is. Reactions are 0 before the first step.
 double structure_value(const Model& model, const spec::History& h, const StepResult* step) {

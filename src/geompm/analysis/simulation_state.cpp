@@ -31,6 +31,7 @@ void Simulation::save(const std::filesystem::path& file) const {
   section("step_solver", [&](ByteWriter& out) {
     out.put(stepper_.last_rate());
     out.put(stepper_.pressure().last());
+    out.put(stepper_.field_rate());
   });
   section("summary", [&](ByteWriter& out) {
     // The wall times so far, this process's included.
@@ -93,6 +94,7 @@ void Simulation::load(const std::filesystem::path& file) {
   ByteReader step_solver = contents.section("step_solver");
   stepper_.set_last_rate(step_solver.get<std::vector<double>>());
   stepper_.pressure().set_last(step_solver.get<std::vector<double>>());
+  stepper_.set_field_rate(step_solver.get<std::map<std::string, std::vector<double>>>());
   step_solver.expect_end();
 
   ByteReader summary = contents.section("summary");

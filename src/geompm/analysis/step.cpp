@@ -231,9 +231,14 @@ bool StepSolver::extrapolated_start(double dt, Vector& x) const {
   bool any = false;
   for (Index k = 0; k < dofs.num_free(); ++k) {
     const UnknownAt at = unknown_at(dofs, dofs.dof_of_free(k));
-    // Unknowns of no node (a structure's) start from zero.
     if (at.node < 0) {
-      x(k) = 0.0;
+      // An unknown of no node (a structure's): its field's rate, where the last step had it.
+      const Unknown u = dofs.unknown(dofs.dof_of_free(k));
+      const Field& field = dofs.field(u.field);
+      const auto it = field_rate_.find(field.name);
+      const std::size_t local = static_cast<std::size_t>(dofs.dof_of_free(k) - field.offset);
+      x(k) = it != field_rate_.end() && local < it->second.size() ? it->second[local] * dt : 0.0;
+      any = any || x(k) != 0.0;
       continue;
     }
     const double rate = last_rate_[rate_index(at, grid_.dim())];
@@ -249,6 +254,15 @@ void StepSolver::remember_increment(const Vector& du, double dt) {
   for (Index d = 0; d < du.size(); ++d)
     if (const UnknownAt at = unknown_at(dofs, d); at.node >= 0)
       last_rate_[rate_index(at, grid_.dim())] = du(d) / dt;
+  // The fields of no node (structures') by name: their unknowns are the same from step to step.
+  field_rate_.clear();
+  for (int f = 0; f < dofs.num_fields(); ++f) {
+    const Field& field = dofs.field(f);
+    if (field.nodal) continue;
+    std::vector<double>& rate = field_rate_[field.name];
+    for (Index k = 0; k < field.entities * field.components; ++k)
+      rate.push_back(du(field.offset + k) / dt);
+  }
 }
 
 void StepSolver::constrain(const PhaseContext& phase, double t0, double t1, Step& step) const {
@@ -307,6 +321,8 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
 
 bool writes_boundary(const spec::Model& spec) {
   if (spec.output.vtk_every <= 0) return false;
+  // Where the soil's boundary matters: surface loads act on it, structures touch it.
+  if (!spec.structures.empty()) return true;
   return std::any_of(spec.phases.begin(), spec.phases.end(),
                      [](const spec::Phase& phase) { return !phase.surface_loads.empty(); });
 }

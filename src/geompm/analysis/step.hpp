@@ -79,6 +79,7 @@ class StepSolver {
   /// (`mixed_pressure_start: fitted`), so that it starts from its points' pressures.
   void start_phase() {
     last_rate_.clear();
+    field_rate_.clear();
     pressure_.forget();
   }
 
@@ -86,6 +87,11 @@ class StepSolver {
   /// checkpoints).
   const std::vector<double>& last_rate() const { return last_rate_; }
   void set_last_rate(std::vector<double> rate) { last_rate_ = std::move(rate); }
+  /// The same for the fields of no node (a structure's), by field name, per unknown.
+  const std::map<std::string, std::vector<double>>& field_rate() const { return field_rate_; }
+  void set_field_rate(std::map<std::string, std::vector<double>> rate) {
+    field_rate_ = std::move(rate);
+  }
 
  private:
   struct Step;
@@ -106,6 +112,7 @@ class StepSolver {
   // The last converged step's increment per unit time, per mesh node and unknown (dim
   // displacements, then the pressure): Newton's first iterate with `predictor: extrapolated`.
   std::vector<double> last_rate_;
+  std::map<std::string, std::vector<double>> field_rate_;  // of the fields of no node
 };
 
 }  // namespace geompm

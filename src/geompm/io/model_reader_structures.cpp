@@ -35,67 +35,69 @@ const std::map<std::string, ShapeKeys>& shape_keys() {
 
 bool is_angle(const std::string& key) { return key.ends_with("angle"); }
 
-spec::StructureShape read_shape(const yaml::Node& node, const Context& context) {
-  if (!node.is_map())
-    node.fail("expected a shape such as {type: pipe, diameter: 0.8, position: [0, 1]}");
-  std::vector<std::string> kinds;
-  for (const auto& [kind, keys] : shape_keys()) kinds.push_back(kind);
-  const yaml::Map first =
-      node.map({"type", "position", "cell_size", "cell", "diameter", "thickness", "length",
-                "tip_angle", "shoulder", "top_angle", "shaft_diameter", "shaft_length", "width",
-                "tip", "breadth", "apex_angle", "height"});
-  spec::StructureShape shape;
-  shape.source = node.where();
-  shape.kind = first.required("type").choice(kinds);
+// The shape's dimensions: only those it takes, the required ones present, lengths >= 0 (> 0 where
+// required), angles in (0, 180]; a 3D bar its length and a 3D plate its breadth, which 2D
+// sections do not have.
+void read_dimensions(const yaml::Node& node, const yaml::Map& section, const Context& context,
+                     spec::StructureShape& shape) {
   const ShapeKeys& keys = shape_keys().at(shape.kind);
-  const bool three_d = context.dimension == 3;
-  // Only the dimensions this shape takes (a 3D plate also its breadth, a 3D bar its length).
-  std::vector<std::string_view> allowed = {"type", "position", "cell_size", "cell"};
-  for (const auto* list : {&keys.required, &keys.optional})
-    for (const std::string& key : *list) allowed.push_back(key);
+  std::vector<std::string> takes(keys.required);
+  takes.insert(takes.end(), keys.optional.begin(), keys.optional.end());
   for (const auto& [key, value] : node.entries()) {
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::vector<std::string> takes(keys.required);
-      takes.insert(takes.end(), keys.optional.begin(), keys.optional.end());
+    if (key == "type" || key == "position" || key == "cell" || key == "cell_size") continue;
+    if (std::find(takes.begin(), takes.end(), key) == takes.end())
       value.fail(fmt::format("a {} takes no '{}'; its dimensions are: {}", shape.kind, key,
                              yaml::join(takes)));
-    }
-    if (key == "type" || key == "position" || key == "cell" || key == "cell_size") continue;
     const double v = is_angle(key) ? read_positive(value) : read_non_negative(value);
     if (is_angle(key) && v > 180)
       value.fail(
           fmt::format("expected an included angle in degrees, at most 180 (flat), found {}", v));
     shape.dimensions[key] = v;
   }
-  for (const std::string& key : keys.required) {
-    const double v = read_positive(first.required(key));
-    shape.dimensions[key] = v;
+  for (const std::string& key : keys.required)
+    shape.dimensions[key] = read_positive(section.required(key));
+  const bool bar = shape.kind == "pipe" || shape.kind == "tbar";
+  if (context.dimension == 3) {
+    if (bar) read_positive(section.required("length"));
+    if (shape.kind == "plate") read_positive(section.required("breadth"));
+    return;
   }
-  const bool needs_length = three_d && (shape.kind == "pipe" || shape.kind == "tbar");
-  if (needs_length) read_positive(first.required("length"));
-  if (three_d && shape.kind == "plate") read_positive(first.required("breadth"));
-  if (!three_d)
-    for (const char* key : {"length", "breadth"})
-      if (auto v = first.find(key);
-          v && (shape.kind == "pipe" || shape.kind == "tbar" || std::string(key) == "breadth"))
-        v->fail(fmt::format("a {}D {} has no {} (it is the section of a long or revolved body)",
-                            context.dimension, shape.kind, key));
-  if (context.kinematics == Kinematics::Axisymmetric && shape.kind == "tbar")
-    first.required("type").fail(
+  for (const char* key : {"length", "breadth"})
+    if (auto v = section.find(key); v && (bar || std::string(key) == "breadth"))
+      v->fail(fmt::format("a 2D {} has no {} (it is the section of a long or revolved body)",
+                          shape.kind, key));
+}
+
+spec::StructureShape read_shape(const yaml::Node& node, const Context& context) {
+  if (!node.is_map())
+    node.fail("expected a shape such as {type: pipe, diameter: 0.8, position: [0, 1]}");
+  std::vector<std::string> kinds;
+  for (const auto& [kind, keys] : shape_keys()) kinds.push_back(kind);
+  const yaml::Map section =
+      node.map({"type", "position", "cell_size", "cell", "diameter", "thickness", "length",
+                "tip_angle", "shoulder", "top_angle", "shaft_diameter", "shaft_length", "width",
+                "tip", "breadth", "apex_angle", "height"});
+  spec::StructureShape shape;
+  shape.source = node.where();
+  shape.kind = section.required("type").choice(kinds);
+  read_dimensions(node, section, context, shape);
+  const bool axisymmetric = context.kinematics == Kinematics::Axisymmetric;
+  if (axisymmetric && shape.kind == "tbar")
+    section.required("type").fail(
         "a T-bar is no body of revolution: use it in plane strain or 3D (in axisymmetry a pipe "
         "is a sphere)");
-  const yaml::Node position = first.required("position");
+  const yaml::Node position = section.required("position");
   shape.position = position.vector(context.dimension);
-  if (context.kinematics == Kinematics::Axisymmetric && shape.position.x() != 0)
+  if (axisymmetric && shape.position.x() != 0)
     position.fail(fmt::format(
         "in an axisymmetric model a structure is a body of revolution about the axis (x = 0): "
         "its position's x must be 0, found {}",
         shape.position.x()));
-  if (auto size = first.find("cell_size")) shape.cell_size = read_positive(*size);
-  if (auto cell = first.find("cell")) {
+  if (auto size = section.find("cell_size")) shape.cell_size = read_positive(*size);
+  if (auto cell = section.find("cell")) {
     const std::string name =
-        cell->choice(three_d ? std::vector<std::string>{"tet4"}
-                             : std::vector<std::string>{"tri3", "tri6", "quad4"});
+        cell->choice(context.dimension == 3 ? std::vector<std::string>{"tet4"}
+                                            : std::vector<std::string>{"tri3", "tri6", "quad4"});
     shape.cell = *parse_cell_type(name);
   }
   return shape;

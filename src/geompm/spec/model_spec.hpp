@@ -157,7 +157,7 @@ struct StructureShape {
   std::map<std::string, double> dimensions;  // diameter, thickness, length, tip_angle, ...
   Vec3 position = Vec3::Zero();  // its anchor: the tip (spudcan, plate, cone), the centre of the
                                  // base (footing) or of the circle (pipe, tbar)
-  double cell_size = 0.0;        // about this size; 0: a tenth of the smallest dimension
+  double cell_size = 0.0;        // about this size; 0: largest dimension / 20, at most smallest / 2
   std::optional<CellType> cell;  // tri3, tri6, quad4 (2D), tet4 (3D); default tri3 / tet4
   SourceLocation source;
 };

@@ -1,5 +1,5 @@
 // A structure's mass, centre of mass and moment of inertia from its mesh and density
-// (docs/theory.md eq. 17.5), integrated cell by cell with each cell's Gauss rule (exact for the
+// (docs/theory.md eq. 17.6), integrated cell by cell with each cell's Gauss rule (exact for the
 // quadratic integrands of straight-sided cells).
 #pragma once
 

@@ -41,11 +41,11 @@ class RigidStructure final : public Structure {
   const Vec3& centre_of_mass() const { return body_.centroid; }
   const Vec3& reference_point() const { return reference_; }
   Mat3 inertia() const { return rotation_ * body_.inertia * rotation_.transpose(); }
-  /// The mass matrix of its unknowns (eq. 17.6): m on the translations, m (theta x s) coupling
+  /// The mass matrix of its unknowns (eq. 17.8): m on the translations, m (theta x s) coupling
   /// them with the rotations (s = centre of mass - reference point) and J about the reference
   /// point on the rotations.
   Eigen::MatrixXd mass_matrix() const;
-  /// The generalised force of a force F at the centre of mass and of a moment M (eq. 17.4):
+  /// The generalised force of a force F at the centre of mass and of a moment M (eq. 17.7):
   /// F on the translations, M + s x F on the rotations.
   Vector generalised_force(const Vec3& force, const Vec3& moment = Vec3::Zero()) const;
 

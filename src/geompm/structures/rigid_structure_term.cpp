@@ -7,7 +7,7 @@ RigidStructureTerm::RigidStructureTerm(RigidStructure& structure, const DofMap& 
                                        std::optional<Newmark> newmark, double dt)
     : structure_(structure), dofs_(dofs), newmark_(newmark), dt_(dt) {
   for (int k = 0; k < structure.components(); ++k) dofs_of_.push_back(structure.dof(dofs, k));
-  // Self-weight at the centre of mass (eq. 17.4) and the drive's force and moment.
+  // Self-weight at the centre of mass (eq. 17.7) and the drive's force and moment.
   applied_ = structure.generalised_force(structure.mass() * gravity) +
              Eigen::Map<const Vector>(load.data(), static_cast<Index>(load.size()));
   if (newmark_) mass_ = structure.mass_matrix();
@@ -26,8 +26,8 @@ Vector RigidStructureTerm::unknowns(const Vector& du) const {
 bool RigidStructureTerm::add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) {
   for (std::size_t k = 0; k < dofs_of_.size(); ++k) forces.external(dofs_of_[k]) += applied_(k);
   if (!newmark_) return true;
-  // Inertia with Newmark's acceleration of the unknowns (seed eq. 8), M / (beta dt^2) on the
-  // tangent.
+  // Inertia with Newmark's acceleration of the unknowns (eq. 17.9, seed eq. 8), M / (beta dt^2) on
+  // the tangent.
   const Vector a =
       newmark_->acceleration(unknowns(du), structure_.velocity(), structure_.acceleration());
   const Vector inertia = mass_ * a;
@@ -67,6 +67,9 @@ DriveForces drive_forces(const RigidStructure& structure, const StructureDrive& 
     const Index d = structure.dof(dofs, k);
     q(k) = dofs.constrained(d) ? reaction(d) : load[k];
   }
+  // Axisymmetry holds the radial motion and the rotation by symmetry, not by a drive: the net
+  // radial force of a body of revolution is zero, whatever its per-radian share at x.
+  if (structure.kinematics() == Kinematics::Axisymmetric) q(0) = q(2) = 0.0;
   DriveForces f;
   if (structure.components() == 3) {
     f.force = Vec3(q(0), q(1), 0.0);

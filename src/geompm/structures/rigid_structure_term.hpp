@@ -1,7 +1,7 @@
-// A rigid structure's own terms in a step (docs/theory.md §17.2, §17.5): its self-weight m g at
+// A rigid structure's own terms in a step (docs/theory.md §17.5): its self-weight m g at
 // the centre of mass and the force and moment its drive applies (f_ext, as generalised forces on
 // its unknowns), and in a dynamic phase its inertia M a with the phase's Newmark (M its mass
-// matrix, eq. 17.6). At the converged step it moves the structure to its new pose and keeps its
+// matrix, eq. 17.8). At the converged step it moves the structure to its new pose and keeps its
 // velocity and acceleration for the next step. Whatever touches the structure (contact) is a
 // contribution of its own.
 #pragma once

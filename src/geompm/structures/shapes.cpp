@@ -108,14 +108,17 @@ std::vector<Vec3> footing_profile(const spec::StructureShape& s) {
   return {Vec3(0, 0, 0), Vec3(B, 0, 0), Vec3(B, H, 0), Vec3(0, H, 0)};
 }
 
-// The cell size: given, or a tenth of the shape's smallest dimension.
+// The cell size: given, or a twentieth of the shape's largest dimension but at most half its
+// smallest (a pipe's wall two cells thick, a shoulder split).
 double cell_size(const spec::StructureShape& s) {
   if (s.cell_size > 0) return s.cell_size;
-  double smallest = 0.0;
+  double smallest = 0.0, largest = 0.0;
   for (const auto& [key, value] : s.dimensions)
-    if (value > 0 && !key.ends_with("angle") && (smallest == 0 || value < smallest))
-      smallest = value;
-  return 0.1 * smallest;
+    if (value > 0 && !key.ends_with("angle")) {
+      if (smallest == 0 || value < smallest) smallest = value;
+      largest = std::max(largest, value);
+    }
+  return std::min(largest / 20, smallest / 2);
 }
 
 // --- 2D: the geo kernel, counter-clockwise loops (cells counter-clockwise, normal +z) ---------

@@ -45,6 +45,7 @@ class Structure {
   virtual void displacement_weights(const DofMap& dofs, const Vec3& x, Index cell,
                                     std::vector<DofWeight>& out) const = 0;
   /// The step converged with increment du (every unknown): move to the new configuration.
+  /// Called once per converged step by the structure's own term (its Contribution::commit).
   virtual void commit(const DofMap& dofs, const Vector& du) = 0;
 
   // --- beyond what contact needs ----------------------------------------------------------------

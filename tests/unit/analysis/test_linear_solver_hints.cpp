@@ -71,3 +71,29 @@ TEST(LinearSolverHints, MixedFormulationHasAPressureField) { check_hints(2, true
 
 }  // namespace
 }  // namespace geompm
+
+namespace geompm {
+namespace {
+
+// A structure's rigid-body unknowns (docs/theory.md §17.2) are a field of their own: rows of no
+// node, listed under the field's name after the displacement's, its constrained ones left out.
+TEST(LinearSolverHints, ListAStructuresUnknownsAsAFieldOfNoNode) {
+  DofMap dofs({3, 4});
+  dofs.add_nodal_field("displacement", FieldKind::Displacement, 2);
+  const int pipe = dofs.add_field("structure:pipe", FieldKind::Other, 1, 3);
+  dofs.constrain(dofs.dof(pipe, 0, 0), 0.1);
+  dofs.number_free();
+  const LinearSolverHints hints = linear_solver_hints(dofs, mesh_nodes());
+  ASSERT_EQ(hints.fields.size(), 2u);
+  EXPECT_EQ(hints.fields[1].name, "structure:pipe");
+  ASSERT_EQ(hints.fields[1].unknowns.size(), 2u);
+  for (const Index row : hints.fields[1].unknowns) {
+    EXPECT_EQ(hints.unknown_node[row], -1);
+    EXPECT_EQ(hints.unknown_component[row], -1);
+  }
+  EXPECT_EQ(hints.fields[1].unknowns[0], dofs.free_index(dofs.dof(pipe, 0, 1)));
+  EXPECT_EQ(hints.block_size, 2);
+}
+
+}  // namespace
+}  // namespace geompm

@@ -1,7 +1,7 @@
 // A rigid structure (structures/rigid_structure, docs/theory.md §17): its unknowns' weights are
 // the rigid motion linearised in the rotation (eq. 17.1), the converged pose is the exact one
-// (eq. 17.3), its mass matrix and generalised forces are those of the closed forms (eqs. 17.4,
-// 17.6), and its own term in a step lets it fall freely under gravity exactly as Newmark's
+// (eq. 17.3), its mass matrix and generalised forces are those of the closed forms (eqs. 17.7,
+// 17.8), and its own term in a step lets it fall freely under gravity exactly as Newmark's
 // trapezoidal rule integrates a constant acceleration, or hang on a spring, with the drive's
 // reaction where it is held.
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geompm/core/byte_archive.hpp"
 #include "geompm/dofs/sparsity.hpp"
 #include "geompm/structures/rigid_structure.hpp"
 #include "geompm/structures/rigid_structure_term.hpp"
@@ -76,6 +77,38 @@ TEST(RigidStructure, WeighsItsUnknownsAsTheLinearisedRigidMotionAndMovesExactly)
   // The surface turned with it: the bottom facet's normal (0, -1) is now along the turn.
   const Vec3 n = s.mesh().surface().front().normal;
   EXPECT_NEAR(n.norm(), 1.0, 1e-14);
+}
+
+TEST(RigidStructure, WeighsItsSixUnknownsIn3DAsTheRotationVector) {
+  RigidStructure s("box", block(Kinematics::ThreeD), 1.0, Vec3(1, 0.5, 0));
+  DofMap dofs;
+  s.add_unknowns(dofs);
+  ASSERT_EQ(dofs.size(), 6);
+  Vector du(6);
+  du << 0.01, -0.02, 0.03, 2e-4, -3e-4, 5e-4;
+  const double theta = du.tail<3>().norm();
+  const std::vector<Vec3> before = s.mesh().nodes();
+  std::vector<Vec3> linear;
+  std::vector<DofWeight> weights;
+  for (const Vec3& x : before) {
+    s.displacement_weights(dofs, x, 0, weights);
+    ASSERT_EQ(weights.size(), 6u);
+    Vec3 u = Vec3::Zero();
+    for (const DofWeight& w : weights) u += w.coefficient * du(w.dof);
+    linear.push_back(u);
+    // The rotations' weights are e_j x (x - c): u = t + theta x (x - c).
+    const Vec3 expected = du.head<3>() + Vec3(du.tail<3>()).cross(x - Vec3(1, 0.5, 0));
+    EXPECT_NEAR((u - expected).norm(), 0.0, 1e-16);
+  }
+  s.commit(dofs, du);
+  for (std::size_t a = 0; a < before.size(); ++a) {
+    // The exact pose differs from the linearised one by at most theta^2 |x - c| / 2.
+    const double gap = (s.mesh().nodes()[a] - before[a] - linear[a]).norm();
+    EXPECT_LE(gap, 0.5 * theta * theta * (before[a] - Vec3(1, 0.5, 0)).norm() * (1 + 1e-6));
+    EXPECT_GT(gap, 0.0);
+  }
+  EXPECT_NEAR((s.rotation() - Vec3(du.tail<3>())).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((s.displacement() - Vec3(du.head<3>())).norm(), 0.0, 1e-15);
 }
 
 TEST(RigidStructure, AxisymmetryMovesOnlyAlongTheAxis) {
@@ -223,6 +256,35 @@ TEST(RigidStructureTerm, HangsOnASpringAndItsDriveHoldsTheRest) {
   EXPECT_DOUBLE_EQ(held.force.y(), -2.0);   // the free component's applied force
   // The rotation is held against the weight's moment about the corner, s x F = -m g s_x.
   EXPECT_NEAR(held.moment.z(), m * 10 * 1.0, 1e-12);
+}
+
+TEST(RigidStructure, SavesAndLoadsItsStateBitForBit) {
+  RigidStructure moved("box", block(Kinematics::ThreeD), 2.0);
+  DofMap dofs;
+  moved.add_unknowns(dofs);
+  Vector du(6);
+  du << 0.1, 0.2, -0.3, 0.01, -0.02, 0.03;
+  moved.commit(dofs, du);
+  moved.start_phase();
+  moved.commit(dofs, 0.5 * du);
+  moved.set_rates(du, 2 * du);
+  ByteWriter out;
+  moved.save(out);
+  RigidStructure fresh("box", block(Kinematics::ThreeD), 2.0);
+  ByteReader in(out.bytes(), "test");
+  fresh.load(in);
+  in.expect_end();
+  EXPECT_EQ(fresh.mesh().nodes(), moved.mesh().nodes());
+  EXPECT_EQ(fresh.displacement(), moved.displacement());
+  EXPECT_EQ(fresh.phase_displacement(), moved.phase_displacement());
+  EXPECT_EQ(fresh.rotation(), moved.rotation());
+  EXPECT_EQ(fresh.phase_rotation(), moved.phase_rotation());
+  EXPECT_EQ(fresh.centre_of_mass(), moved.centre_of_mass());
+  EXPECT_EQ(fresh.mass_matrix(), moved.mass_matrix());
+  EXPECT_EQ(fresh.velocity(), moved.velocity());
+  EXPECT_EQ(fresh.acceleration(), moved.acceleration());
+  // The 3D phase rotation is the second commit's alone.
+  EXPECT_NEAR((moved.phase_rotation() - 0.5 * du.tail<3>()).norm(), 0.0, 1e-15);
 }
 
 TEST(StructureDrive, PrescribesIncrementsOfDisplacementOrVelocity) {
