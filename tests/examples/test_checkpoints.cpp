@@ -286,6 +286,7 @@ TEST_F(Checkpoints, AStructureResumesWithItsPoseAndMotion) {
                        "cell_size: 0.25}\n"
                        "    density: 2\n"
                        "    reference_point: [4.5, 3]\n"
+                       "    contact: none\n"
                        "phases:\n");
   model = replace_once(model, "      - {boundary: top, fix: [y]}\n",
                        "      - {boundary: top, fix: [y]}\n"

@@ -50,10 +50,10 @@ struct ModelRun {
   }
 };
 
-/// Runs `spec` (possibly edited by the test) and returns the model, summary and history.
-inline ModelRun run_spec(const spec::Model& spec, const std::string& name) {
+/// Runs a built model (possibly edited by the test) and returns it with its summary and history.
+inline ModelRun run_built(std::unique_ptr<Model> model, const std::string& name) {
   ModelRun r;
-  r.model = build_model(spec);
+  r.model = std::move(model);
   r.output = fresh_directory(name);
   RunOptions options;
   options.output_dir = r.output;
@@ -61,6 +61,11 @@ inline ModelRun run_spec(const spec::Model& spec, const std::string& name) {
   r.summary = run_analysis(*r.model, options);
   r.history = read_csv(r.output / "history.csv");
   return r;
+}
+
+/// Runs `spec` (possibly edited by the test) and returns the model, summary and history.
+inline ModelRun run_spec(const spec::Model& spec, const std::string& name) {
+  return run_built(build_model(spec), name);
 }
 
 inline spec::Model read_example(const std::string& relative) {

@@ -13,16 +13,9 @@ namespace {
 
 testing::ModelRun run_scaled(const std::string& example, double scale_factor,
                              const std::string& name) {
-  testing::ModelRun r;
-  r.model = build_model(testing::read_example(example));
-  for (ContactPair& pair : r.model->contacts) pair.scale_factor = scale_factor;
-  r.output = testing::fresh_directory(name);
-  RunOptions options;
-  options.output_dir = r.output;
-  options.progress = false;
-  r.summary = run_analysis(*r.model, options);
-  r.history = read_csv(r.output / "history.csv");
-  return r;
+  auto model = build_model(testing::read_example(example));
+  for (ContactPair& pair : model->contacts) pair.scale_factor = scale_factor;
+  return testing::run_built(std::move(model), name);
 }
 
 TEST(Contact, PatchTestPassesAUniformPressureExactly) {

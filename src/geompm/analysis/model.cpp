@@ -336,6 +336,7 @@ ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structu
   pair.name = structure.name;
   pair.structure = index;
   const spec::Contact& c = structure.contact;
+  pair.enabled = c.enabled;
   if (!c.bodies.empty()) {
     pair.bodies.assign(spec.bodies.size(), 0);
     for (std::size_t b = 0; b < spec.bodies.size(); ++b)

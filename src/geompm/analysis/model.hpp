@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "geompm/contact/contact_pair.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/point_locator.hpp"
 #include "geompm/points/material_points.hpp"
 #include "geompm/spec/model_spec.hpp"
-#include "geompm/contact/contact_pair.hpp"
 #include "geompm/structures/structure.hpp"
 
 namespace geompm {

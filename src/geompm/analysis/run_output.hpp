@@ -51,8 +51,8 @@ class OutputWriter {
  private:
   struct Positions {
     std::uintmax_t history = 0, newton = 0;  // bytes of history.csv and newton.csv
-    std::vector<std::pair<double, std::string>> points, grid;             // the series' entries
-    std::vector<std::pair<double, std::string>> boundary;  // with writes_boundary only
+    std::vector<std::pair<double, std::string>> points, grid;  // the series' entries
+    std::vector<std::pair<double, std::string>> boundary;      // with writes_boundary only
     std::vector<std::vector<std::pair<double, std::string>>> structures;  // one per structure
     std::vector<double> last_values;
   };
@@ -67,7 +67,7 @@ class OutputWriter {
   Model& model_;
   std::filesystem::path dir_;
   PvdSeries points_series_, grid_series_, boundary_series_;
-  bool boundary_;  // writes_boundary(model.spec)
+  bool boundary_;                            // writes_boundary(model.spec)
   std::vector<PvdSeries> structure_series_;  // structure_<name>.pvd, one per structure
   HistoryRecorder recorder_;
   std::vector<std::string> columns_;

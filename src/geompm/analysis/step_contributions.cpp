@@ -116,9 +116,10 @@ void contacts(StepSystem& system, StepContext& c) {
   // Each structure's contact with the soil's level set (docs/theory.md §18), its multipliers
   // after the structures' unknowns.
   for (ContactPair& pair : c.model.contacts)
-    system.add(std::make_unique<LevelSetContact>(c.grid, c.model.points, *c.model.locator,
-                                                 *c.model.structures[pair.structure], pair,
-                                                 c.model.largest_modulus(), system.dofs()));
+    if (pair.enabled)
+      system.add(std::make_unique<LevelSetContact>(c.grid, c.model.points, *c.model.locator,
+                                                   *c.model.structures[pair.structure], pair,
+                                                   c.model.largest_modulus(), system.dofs()));
 }
 
 void surface_loads(StepSystem& system, StepContext& c) {

@@ -22,6 +22,7 @@ struct ContactPair {
   /// Per body index: 1 if its points are the soil the structure touches (empty: all bodies).
   std::vector<char> bodies;
   ContactLaw law;
+  bool enabled = true;  // false: the structure touches nothing (`contact: none`)
   /// Multiplies the automatic scale c = E / h (tests only: the results do not depend on it).
   double scale_factor = 1.0;
 

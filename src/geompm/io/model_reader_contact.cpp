@@ -11,6 +11,12 @@ namespace geompm::model_reader {
 spec::Contact read_contact(const yaml::Node& node, const Context& context) {
   spec::Contact c;
   c.source = node.where();
+  if (node.is_scalar()) {
+    if (node.text() != "none")
+      node.fail("expected `none` or a map such as {tangential: rough}, found " + node.describe());
+    c.enabled = false;
+    return c;
+  }
   const yaml::Map section = node.map({"tangential", "adhesion", "friction", "cap", "bodies"});
   if (auto tangential = section.find("tangential"))
     c.tangential = tangential->choice({"smooth", "rough", "adhesion", "friction"});

@@ -431,10 +431,10 @@ void check_point_set_used_once(const yaml::Node& node, const std::string& point_
 
 spec::Phase read_phase(const yaml::Node& node, const Context& context,
                        const std::vector<spec::Phase>& earlier) {
-  const yaml::Map section = node.map({"name", "duration", "time_step", "dynamics", "newton",
-                                      "gravity", "k0_procedure", "fixities", "prescribed_motion",
-                                      "grid_motion", "rigid_footings", "loads", "structures",
-                                      "surface_loads"});
+  const yaml::Map section =
+      node.map({"name", "duration", "time_step", "dynamics", "newton", "gravity", "k0_procedure",
+                "fixities", "prescribed_motion", "grid_motion", "rigid_footings", "loads",
+                "structures", "surface_loads"});
   spec::Phase phase;
   phase.source = node.where();
   const yaml::Node name = section.required("name");

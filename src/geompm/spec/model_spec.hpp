@@ -168,6 +168,7 @@ struct StructureShape {
 /// The contact of a structure with the soil (docs/theory.md §18): the tangential law and the
 /// bodies whose points it touches.
 struct Contact {
+  bool enabled = true;                // `contact: none`: the structure touches nothing
   std::string tangential = "smooth";  // smooth | rough | adhesion | friction
   double adhesion = 0.0;              // adhesion: the largest shear stress
   double friction = 0.0;              // friction: Coulomb's mu ...
