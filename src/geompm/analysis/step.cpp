@@ -148,10 +148,18 @@ UnknownAt unknown_at(const DofMap& dofs, Index dof) {
 std::string out_of_balance(const DofMap& dofs, const Mesh& mesh, Index dof, double value) {
   const UnknownAt u = unknown_at(dofs, dof);
   if (u.node < 0) {
-    // An unknown of no node: a structure's (its component: translations, then rotations).
+    // An unknown of no node: a structure's (its component: translations, then rotations) or a
+    // contact's multiplier.
     const Unknown what = dofs.unknown(dof);
-    return fmt::format("largest out-of-balance force {:.3g} in component {} of '{}'", value,
-                       what.component, dofs.field(what.field).name);
+    const std::string& field = dofs.field(what.field).name;
+    std::string message = fmt::format("largest out-of-balance force {:.3g} in component {} of '{}'",
+                                      value, what.component, field);
+    if (field.starts_with("structure:"))
+      message +=
+          " (a structure free in a component that touches nothing has no stiffness in a "
+          "quasi-static phase: place it on the soil, or prescribe that component until it "
+          "touches)";
+    return message;
   }
   const Vec3& x = mesh.nodes[u.node];
   const std::string at = mesh.dim() == 3
@@ -235,7 +243,10 @@ bool StepSolver::extrapolated_start(double dt, Vector& x) const {
       // An unknown of no node (a structure's): its field's rate, where the last step had it.
       const Unknown u = dofs.unknown(dofs.dof_of_free(k));
       const Field& field = dofs.field(u.field);
-      const auto it = field_rate_.find(field.name);
+      // A contact's multipliers belong to groups of its surface that change from step to step:
+      // they start from the last step's values (docs/theory.md eq. 18.9), not extrapolated.
+      const auto it =
+          field.name.starts_with("contact:") ? field_rate_.end() : field_rate_.find(field.name);
       const std::size_t local = static_cast<std::size_t>(dofs.dof_of_free(k) - field.offset);
       x(k) = it != field_rate_.end() && local < it->second.size() ? it->second[local] * dt : 0.0;
       any = any || x(k) != 0.0;

@@ -167,3 +167,24 @@ TEST(StructuresRun, AreDescribedByCheck) {
 
 }  // namespace
 }  // namespace geompm
+
+namespace geompm {
+namespace {
+
+TEST(StructuresRun, AFreeStructureTouchingNothingStopsTheRunWithAHint) {
+  // Free vertically under its weight, above the ground: nothing holds it in a quasi-static phase.
+  std::string text = kModel;
+  const std::string drive = R"(pipe: {displacement: ["0.1*t", "-0.2*t"], rotation: "0.4*t"})";
+  text.replace(text.find(drive), drive.size(), R"(pipe: {displacement: [0, ~], rotation: 0})");
+  std::string message;
+  try {
+    testing::run_spec(read_model_from_string(text, "free.yaml"), "structures_free");
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("'structure:pipe'"), std::string::npos) << message;
+  EXPECT_NE(message.find("touches nothing"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace geompm
