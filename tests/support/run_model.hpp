@@ -7,10 +7,12 @@
 #include <system_error>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
+#include "geompm/core/error.hpp"
 #include "geompm/io/history_writer.hpp"
 #include "geompm/io/model_reader.hpp"
 
@@ -66,6 +68,17 @@ inline ModelRun run_built(std::unique_ptr<Model> model, const std::string& name)
 /// Runs `spec` (possibly edited by the test) and returns the model, summary and history.
 inline ModelRun run_spec(const spec::Model& spec, const std::string& name) {
   return run_built(build_model(spec), name);
+}
+
+/// What building the model of `text` refuses, or "" (and a test failure) if it is accepted.
+inline std::string build_error(const std::string& text, const std::string& file = "model.yaml") {
+  try {
+    build_model(read_model_from_string(text, file));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the model was accepted";
+  return "";
 }
 
 inline spec::Model read_example(const std::string& relative) {

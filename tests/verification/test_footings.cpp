@@ -123,29 +123,20 @@ TEST(GridMotionFooting, VelocityAndAFixedNodeOnTheSymmetryAxis) {
               1e-10 * std::abs(displaced.column("force").back()));
 }
 
-std::string build_error(const std::string& text) {
-  try {
-    build_model(read_model_from_string(text, "model.yaml"));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the model was accepted";
-  return "";
-}
-
 TEST(GridMotionFooting, RefusesANodeSetWithoutNodesAndANodeDrivenTwice) {
   std::string text = block_under_grid_motion("displacement: [~, \"-0.01*t\"]");
   const std::string empty = std::string(text).replace(text.find("{min: [0, 1], max: [1, 1]}"), 26,
                                                       "{min: [0.1, 1], max: [0.2, 1]}");
-  EXPECT_NE(build_error(empty).find("node_sets.base_of_footing: node set 'base_of_footing' holds "
-                                    "no mesh node"),
+  EXPECT_NE(testing::build_error(empty).find(
+                "node_sets.base_of_footing: node set 'base_of_footing' holds "
+                "no mesh node"),
             std::string::npos)
-      << build_error(empty);
+      << testing::build_error(empty);
   // The plane y = 1 holds the node set's nodes: both drive y there.
   const std::string twice = std::string(text).replace(
       text.find("    fixities:"), 0,
       "      - {plane: {axis: y, value: 1}, displacement: [~, \"-0.02*t\"]}\n");
-  const std::string message = build_error(twice);
+  const std::string message = testing::build_error(twice);
   EXPECT_NE(message.find("phases[0].grid_motion[1]: the node at [0, 1, 0] is already driven in y "
                          "by phases[0].grid_motion[0]"),
             std::string::npos)

@@ -85,19 +85,9 @@ TEST(InitialStress, VariesWithDepthAsExpressions) {
   }
 }
 
-std::string build_error(const std::string& text) {
-  try {
-    build_model(read_model_from_string(text, "model.yaml"));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the model was accepted";
-  return "";
-}
-
 TEST(InitialStress, OutsideTheYieldSurfaceIsRefused) {
   // |syy - sxx| = 50 > 2 s_u = 40.
-  const std::string message = build_error(cone_start("{sxx: -40, syy: -90, szz: -40}"));
+  const std::string message = testing::build_error(cone_start("{sxx: -40, syy: -90, szz: -40}"));
   EXPECT_NE(message.find("model.yaml:11: bodies.soil.initial_stress: the initial stress of the "
                          "point at"),
             std::string::npos)
@@ -106,9 +96,10 @@ TEST(InitialStress, OutsideTheYieldSurfaceIsRefused) {
 }
 
 TEST(InitialStress, ABodyAlsoSetByTheK0ProcedureIsRefused) {
-  const std::string message = build_error(cone_start("{sxx: -66, syy: -66, szz: -66}",
-                                                     "    gravity: {acceleration: [0, -10]}\n"
-                                                     "    k0_procedure: {K0: 1}\n"));
+  const std::string message =
+      testing::build_error(cone_start("{sxx: -66, syy: -66, szz: -66}",
+                                      "    gravity: {acceleration: [0, -10]}\n"
+                                      "    k0_procedure: {K0: 1}\n"));
   EXPECT_NE(message.find("bodies.soil.initial_stress: the body 'soil' is also set by the K0 "
                          "procedure"),
             std::string::npos)
