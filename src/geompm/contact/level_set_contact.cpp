@@ -124,7 +124,8 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
       const auto nodes = mesh.cell_nodes(where->cell);
       for (Index node : nodes)
         if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
-      h = std::max(h, cell_size(mesh, where->cell));
+      const double here = cell_size(mesh, where->cell);
+      h = std::max(h, here);
       // A piece that touched the soil at the end of the last step still touches it: the soil's
       // surface there is where the contact held it (eq. 18.2), which the level set, smeared over
       // a cell, would place up to the step's displacement away.
@@ -132,7 +133,7 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
       if (!touching) {
         const double phi = level_set_.value(where->cell, where->xi);
         const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
-        k.p0 += w * phi / std::max(gradient.norm(), 0.5 / cell_size(mesh, where->cell));
+        k.p0 += w * phi / std::max(gradient.norm(), 0.5 / here);
       }
       const auto along = [&](const Vec3& c) {
         return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
