@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
 
 namespace geompm {
@@ -34,7 +35,10 @@ void apply_initial_stresses(Model& model) {
     check_not_in_k0_procedure(spec, body);
     const SourceLocation& where = body.initial_stress->source;
     std::array<Expression, 6> component;
-    for (int k = 0; k < 6; ++k) component[k] = Expression(body.initial_stress->components[k]);
+    static const char* names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+    for (int k = 0; k < 6; ++k)
+      component[k] = Expression(body.initial_stress->components[k],
+                                fmt::format("{}.{}", where.describe(), names[k]));
     // (xx, yy, zz, xy, yz, xz) into the symmetric tensor.
     constexpr int row[6] = {0, 1, 2, 0, 1, 0}, col[6] = {0, 1, 2, 1, 2, 2};
     for (Index p = 0; p < points.size(); ++p) {

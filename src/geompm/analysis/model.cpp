@@ -8,10 +8,12 @@
 
 #include "geompm/analysis/geostatic_stress.hpp"
 #include "geompm/analysis/initial_stress.hpp"
+#include "geompm/analysis/model_size.hpp"
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
 #include "geompm/core/byte_archive.hpp"
+#include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
@@ -245,7 +247,9 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
   const Mesh& mesh = model.mesh;
   const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
   std::array<Expression, 3> v0;
-  for (int d = 0; d < 3; ++d) v0[d] = Expression(body.initial_velocity[d]);
+  for (int d = 0; d < 3; ++d)
+    v0[d] = Expression(body.initial_velocity[d],
+                       fmt::format("{}.initial_velocity[{}]", body.source.describe(), d));
 
   const Index before = model.points.size();
   for (Index c = 0; c < mesh.num_cells(); ++c) {
@@ -327,6 +331,33 @@ void check_boundaries(const spec::Model& spec, const Mesh& mesh) {
     check_boundary(mesh, history.boundary, history.source);
 }
 
+// A rigid footing acts only on points, and points live inside the mesh: a footprint beside the
+// mesh, or a base beyond its vertical extent, would run the phase with no force at all.
+void check_footings_in_mesh(const spec::Model& spec, const Mesh& mesh) {
+  const MeshBounds box = mesh_bounds(mesh);
+  const int dim = mesh.dim(), vertical = dim - 1;
+  for (const auto& phase : spec.phases)
+    for (const auto& footing : phase.footings) {
+      const std::array<double, 2>* ranges[2] = {&footing.x, &footing.y};
+      for (int d = 0; d < vertical; ++d)
+        if ((*ranges[d])[1] < box.lo(d) - box.tol || (*ranges[d])[0] > box.hi(d) + box.tol)
+          throw InputError(
+              footing.source,
+              fmt::format("the rigid footing '{}' lies beside the mesh: its footprint spans "
+                          "[{:g}, {:g}] in {} but the mesh spans [{:g}, {:g}]; it would touch "
+                          "no point",
+                          footing.name, (*ranges[d])[0], (*ranges[d])[1], "xyz"[d], box.lo(d),
+                          box.hi(d)));
+      if (footing.base < box.lo(vertical) - box.tol || footing.base > box.hi(vertical) + box.tol)
+        throw InputError(footing.source,
+                         fmt::format("the rigid footing '{}' lies outside the mesh: its base is "
+                                     "at {} = {:g} but the mesh spans [{:g}, {:g}]; it would "
+                                     "touch no point",
+                                     footing.name, "xyz"[vertical], footing.base, box.lo(vertical),
+                                     box.hi(vertical)));
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -353,9 +384,9 @@ ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structu
   if (c.cap) pair.law.cap = *c.cap;
   return pair;
 }
-}  // namespace
 
-std::unique_ptr<Model> build_model(const spec::Model& spec) {
+std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
+  check_model_size(spec);  // before the first allocation that could not fit
   auto model = std::make_unique<Model>();
   model->spec = spec;
   model->mesh = make_mesh(spec);
@@ -368,6 +399,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
+  check_footings_in_mesh(spec, mesh);
   for (const spec::Structure& structure : spec.structures) {
     model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
@@ -377,6 +409,18 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   apply_initial_stresses(*model);
   apply_k0_procedure(*model);
   return model;
+}
+
+}  // namespace
+
+std::unique_ptr<Model> build_model(const spec::Model& spec) {
+  // An expression evaluated while the model is built (initial velocities and stresses) that
+  // gives no finite value is bad input, found by `geompm check`.
+  try {
+    return build_model_parts(spec);
+  } catch (const NonFiniteValue& e) {
+    throw InputError(e.what());
+  }
 }
 
 std::string describe_model(const Model& model) {

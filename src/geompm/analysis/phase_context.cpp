@@ -17,14 +17,16 @@ PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(
     motion.set = model.point_set_bit(m.point_set);
     motion.velocity = m.velocity;
     for (int d = 0; d < 3; ++d)
-      if (!m.components[d].empty()) motion.components[d] = Expression(m.components[d]);
+      if (!m.components[d].empty())
+        motion.components[d] = Expression(m.components[d], component_place(m.source, d));
     motions.push_back(std::move(motion));
   }
   for (const auto& f : phase.footings) footings.emplace_back(f, model.mesh.dim());
   for (const auto& l : phase.loads) {
     Load load;
     load.set = model.point_set_bit(l.point_set);
-    for (int d = 0; d < 3; ++d) load.components[d] = Expression(l.components[d]);
+    for (int d = 0; d < 3; ++d)
+      load.components[d] = Expression(l.components[d], component_place(l.source, d));
     loads.push_back(std::move(load));
   }
   for (const auto& structure : model.structures) {

@@ -18,7 +18,14 @@ RunSummary run_analysis(Model& model, const RunOptions& options) {
   try {
     simulation.run();
   } catch (const RunError& e) {
-    simulation.finish(e.what());  // summary.json says why, and the plots show what was done
+    // summary.json says why, and the plots show what was done; what stopped the run (a full
+    // disk) may keep those from being written too, which the message then says as well.
+    try {
+      simulation.finish(e.what());
+    } catch (const std::exception& also) {
+      throw RunError(fmt::format("{}\n(and the run's summary could not be written: {})", e.what(),
+                                 also.what()));
+    }
     throw;
   }
   simulation.finish();

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 
 #include "geompm/analysis/output_fields.hpp"
@@ -127,9 +128,21 @@ void OutputWriter::newton_log(int step_number, double time, double dt, const Ste
 }
 
 void OutputWriter::initial() {
-  write_points(0.0, 0);
-  write_structures(0.0, 0);
+  if (model_.spec.output.vtk_every > 0) {  // vtk: {every: 0} writes no ParaView file at all
+    write_points(0.0, 0);
+    write_structures(0.0, 0);
+  }
   append_history(recorder_.initial_values(model_));
+}
+
+// The points (and structures) as the last converged step left them, unless that step wrote them
+// already: a run that stops between two ParaView steps still shows where it stopped.
+void OutputWriter::last_state(double time, int step_number) {
+  if (model_.spec.output.vtk_every <= 0) return;
+  const auto& written = points_series_.entries();
+  if (!written.empty() && written.back().second == points_file(step_number)) return;
+  write_points(time, step_number);
+  write_structures(time, step_number);
 }
 
 void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseContext& phase,
@@ -183,6 +196,14 @@ std::vector<std::filesystem::path> OutputWriter::plots() {
 }
 
 void OutputWriter::append_history(const std::vector<double>& values) {
+  // A NaN or infinity never reaches the results: the run stops with the step before it.
+  for (std::size_t k = 0; k < values.size() && k < columns_.size(); ++k)
+    if (!std::isfinite(values[k]))
+      throw RunError(fmt::format(
+          "the history column '{}' would be {} at time {:g}: the model's values lie outside "
+          "what the arithmetic can follow (check the magnitudes of its parameters and loads); "
+          "history.csv holds every step before it",
+          columns_[k], values[k], values.empty() ? 0.0 : values[0]));
   history_.append(values);
   // As the CSV has them (10 significant digits), so that summary.json agrees with history.csv.
   last_values_.clear();
@@ -191,8 +212,12 @@ void OutputWriter::append_history(const std::vector<double>& values) {
     last_values_.push_back(std::strtod(fmt::format("{:.10g}", v).c_str(), nullptr));
 }
 
+std::string OutputWriter::points_file(int step_number) {
+  return fmt::format("vtk/points_{:06d}.vtu", step_number);
+}
+
 void OutputWriter::write_points(double time, int step_number) {
-  const std::string name = fmt::format("vtk/points_{:06d}.vtu", step_number);
+  const std::string name = points_file(step_number);
   write_vtu_points(dir_ / name, model_.points.position, point_fields(model_));
   points_series_.add(time, name);
 }

@@ -40,6 +40,9 @@ class OutputWriter {
   /// A converged step: its history row and, if `vtk`, its ParaView files.
   void step(GridSystem& grid, const StepResult& step, const PhaseContext& phase, double phase_time,
             double time, int step_number, double dt, bool vtk);
+  /// A stopped run: the points' (and structures') ParaView files of the last converged step, if
+  /// the step did not write them (nothing with vtk: {every: 0}).
+  void last_state(double time, int step_number);
   /// Draws the plots the model asks for; returns the files written.
   std::vector<std::filesystem::path> plots();
 
@@ -59,6 +62,7 @@ class OutputWriter {
   static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir,
                                   bool boundary);
   OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
+  static std::string points_file(int step_number);  // relative to the output directory
   void append_history(const std::vector<double>& values);
   void write_points(double time, int step_number);
   void write_structures(double time, int step_number);

@@ -26,6 +26,10 @@ void RunSummary::save(ByteWriter& out) const {
     out.put(p.wall_seconds);
   }
   out.put(resumed_at_steps);
+  std::vector<std::pair<std::int32_t, std::array<double, 4>>> lost_points_saved;
+  for (const LostPoint& p : lost)
+    lost_points_saved.push_back({p.id, {p.time, p.position[0], p.position[1], p.position[2]}});
+  out.put(lost_points_saved);
 }
 
 void RunSummary::load(ByteReader& in) {
@@ -46,6 +50,10 @@ void RunSummary::load(ByteReader& in) {
     in.get(p.wall_seconds);
   }
   in.get(resumed_at_steps);
+  std::vector<std::pair<std::int32_t, std::array<double, 4>>> lost_points_saved;
+  in.get(lost_points_saved);
+  lost.clear();
+  for (const auto& [id, at] : lost_points_saved) lost.push_back({id, at[0], {at[1], at[2], at[3]}});
   in.expect_end();
 }
 
@@ -72,6 +80,10 @@ void write_summary_json(const std::filesystem::path& file, const RunSummary& sum
   json["wall_seconds"] = summary.wall_seconds;
   json["lost_points"] = summary.lost_points;
   json["lost_mass"] = summary.lost_mass;
+  nlohmann::ordered_json lost = nlohmann::ordered_json::array();
+  for (const LostPoint& p : summary.lost)
+    lost.push_back({{"id", p.id}, {"time", p.time}, {"position", p.position}});
+  json["lost"] = lost;
   json["resumed_at_steps"] = summary.resumed_at_steps;
   nlohmann::ordered_json phases = nlohmann::ordered_json::array();
   for (const PhaseSummary& p : summary.phases)

@@ -3,6 +3,7 @@
 // of the saved state of a run: a resumed run goes on counting from its checkpoint.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -24,6 +25,17 @@ struct PhaseSummary {
   double wall_seconds = 0.0;
 };
 
+/// A material point that left the mesh and was removed (numerics.lost_points: remove): its id,
+/// the time, and where it would have gone.
+struct LostPoint {
+  std::int32_t id = 0;
+  double time = 0.0;
+  std::array<double, 3> position = {0.0, 0.0, 0.0};
+};
+
+/// The most lost points summary.json lists one by one (the count and mass cover them all).
+inline constexpr std::size_t max_listed_lost_points = 1000;
+
 struct RunSummary {
   double wall_seconds = 0.0;
   int steps = 0;
@@ -43,6 +55,7 @@ struct RunSummary {
   std::uint64_t model_hash = 0;  // FNV-1a 64 of the model file's text
   double lost_mass = 0.0;
   std::int64_t lost_points = 0;
+  std::vector<LostPoint> lost;  // the first max_listed_lost_points of them
   /// history.csv's columns and its last row, as the file has them.
   std::vector<std::string> history_columns;
   std::vector<double> history_last;

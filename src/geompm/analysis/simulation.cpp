@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "geompm/analysis/motion_check.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/checkpoint_file.hpp"
+#include "geompm/io/output_directory.hpp"
 
 namespace geompm {
 
@@ -52,7 +54,11 @@ Simulation::~Simulation() = default;
 
 void Simulation::start() {
   // What an earlier run in the same directory left must not be mistaken for this run's: its
-  // checkpoint (a later --resume would go back to it), its summary, a half-written checkpoint.
+  // checkpoint (a later --resume would go back to it), its summary, a half-written checkpoint,
+  // the temporaries of files being written when it was killed.
+  prepare_output_directory(options_.output_dir);
+  remove_stale_temporaries(options_.output_dir);
+  remove_stale_temporaries(options_.output_dir / "vtk");
   const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
   std::filesystem::remove(checkpoint);
   std::filesystem::remove(checkpoint_temporary(checkpoint));
@@ -71,8 +77,11 @@ void Simulation::resume() {
         "to start again",
         checkpoint.string()));
   load(checkpoint);
-  // A half-written checkpoint of the run that stopped is of no use (the one just read is).
+  // A half-written checkpoint of the run that stopped is of no use (the one just read is), nor
+  // are the temporaries of the files it was writing when it was killed.
   std::filesystem::remove(checkpoint_temporary(checkpoint));
+  remove_stale_temporaries(options_.output_dir);
+  remove_stale_temporaries(options_.output_dir / "vtk");
   std::filesystem::remove(options_.output_dir / "summary.json");
   summary_.resumed_at_steps.push_back(step_number_);
   summary_.history_file = output_->history_file();
@@ -86,6 +95,7 @@ void Simulation::run() {
   for (; phase_index_ < model_.spec.phases.size(); ++phase_index_) {
     if (!phase_) begin_phase();  // (a resumed run is in the middle of one)
     run_phase();
+    check_motions_followed();
     summary_.phases[phase_index_].status = "finished";
     phase_.reset();
     control_.reset();
@@ -143,7 +153,11 @@ void Simulation::check_lost_points(const StepResult& step, double t) {
         fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
                     "up to time {:g} are in {}",
                     spec.name, t, time_, options_.output_dir.string()));
-  if (step.lost.empty() || model_.spec.numerics.lost_points != spec::LostPointPolicy::Stop) return;
+  if (step.lost.empty()) return;
+  if (model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove) {
+    report_removed_points(step, t);
+    return;
+  }
   std::string where;
   for (std::size_t k = 0; k < std::min<std::size_t>(step.lost.size(), 5); ++k)
     where += fmt::format("\n  point {} would move to ({:.6g}, {:.6g}, {:.6g})", step.lost[k].first,
@@ -154,6 +168,26 @@ void Simulation::check_lost_points(const StepResult& step, double t) {
                   "lost_points: remove. Results up to time {:g} are in {}",
                   spec.name, t, step.lost.size(), where, step.lost.size() > 5 ? "\n  ..." : "",
                   time_, options_.output_dir.string()));
+}
+
+// Which points were removed, and where they went: on the log (the first few of a step) and in
+// summary.json (the first max_listed_lost_points of the run).
+void Simulation::report_removed_points(const StepResult& step, double t) {
+  std::string where;
+  for (std::size_t k = 0; k < step.lost.size(); ++k) {
+    const auto& [id, x] = step.lost[k];
+    if (summary_.lost.size() < max_listed_lost_points)
+      summary_.lost.push_back({static_cast<std::int32_t>(id), t, {x.x(), x.y(), x.z()}});
+    if (k < 5)
+      where += fmt::format("\n  point {} would move to ({:.6g}, {:.6g}, {:.6g})", id, x.x(), x.y(),
+                           x.z());
+  }
+  if (!options_.log) return;
+  progress_.finish();
+  *options_.log << fmt::format(
+      "phase '{}', time {:g}: {} material point(s) left the mesh and were removed "
+      "(numerics.lost_points = remove):{}{}\n",
+      phase_->spec->name, t, step.lost.size(), where, step.lost.size() > 5 ? "\n  ..." : "");
 }
 
 void Simulation::accept(const StepResult& step, double dt) {
@@ -204,6 +238,18 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   last_checkpoint_ = Clock::now();
 }
 
+// After the phase's last step (written, and checkpointed), so that its results are kept.
+void Simulation::check_motions_followed() {
+  const std::string unfollowed = unfollowed_motions(model_, *phase_);
+  if (unfollowed.empty()) return;
+  stop(fmt::format(
+      "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "
+      "resists more than the penalty springs that drive its points can impose (docs/theory.md "
+      "§5): prescribe a motion the body can follow, or drive it through a rigid footing, a "
+      "grid_motion or a structure. Results up to time {:g} are in {}",
+      phase_->spec->name, unfollowed, time_, options_.output_dir.string()));
+}
+
 void Simulation::update_clocks() {
   summary_.wall_seconds = wall_before_ + seconds_since(started_);
   summary_.phases[phase_index_].wall_seconds = phase_wall_before_ + seconds_since(phase_started_);
@@ -217,6 +263,11 @@ void Simulation::stop(const std::string& message) {
 void Simulation::finish(const std::string& stop_reason) {
   progress_.finish();
   summary_.status = stop_reason.empty() ? "finished" : "stopped";
+  // A stop thrown from below the step loop (an expression's value, a failed write) leaves its
+  // phase "running".
+  if (!stop_reason.empty() && phase_index_ < summary_.phases.size() &&
+      summary_.phases[phase_index_].status == "running")
+    summary_.phases[phase_index_].status = "stopped";
   summary_.time = time_;
   summary_.reason = stop_reason.empty() ? "finished" : stop_reason;
   summary_.wall_seconds = wall_before_ + seconds_since(started_);
@@ -229,6 +280,12 @@ void Simulation::finish(const std::string& stop_reason) {
     if (stop_reason.empty()) {
       output_->plots();
     } else {
+      // What stopped the run (a full disk) may keep these from being written: the stop's
+      // message matters more.
+      try {
+        output_->last_state(time_, step_number_);
+      } catch (const std::exception&) {
+      }
       try {
         output_->plots();
       } catch (const std::exception&) {

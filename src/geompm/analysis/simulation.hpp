@@ -54,6 +54,8 @@ class Simulation {
   void run_phase();
   void cut_back(const StepResult& step, double t, double dt);
   void check_lost_points(const StepResult& step, double t);
+  void report_removed_points(const StepResult& step, double t);
+  void check_motions_followed();
   void accept(const StepResult& step, double dt);
   void checkpoint_if_due(bool phase_done);
   void update_clocks();

@@ -4,6 +4,7 @@
 
 #include "geompm/boundary/footing_contact.hpp"
 #include "geompm/contact/level_set_contact.hpp"
+#include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
 #include "geompm/levelset/surface_load.hpp"
 #include "geompm/physics/body_loads.hpp"
@@ -137,9 +138,10 @@ void surface_loads(StepSystem& system, StepContext& c) {
     where.range = load.where;
     auto facets = zero_level_set(LevelSet(c.grid, c.model.points, std::move(bodies)), &where);
     if (facets.empty()) continue;
-    const std::array<Expression, 3> value = {Expression(load.components[0]),
-                                             Expression(load.components[1]),
-                                             Expression(load.components[2])};
+    const std::array<Expression, 3> value = {
+        Expression(load.components[0], component_place(load.source, 0)),
+        Expression(load.components[1], component_place(load.source, 1)),
+        Expression(load.components[2], component_place(load.source, 2))};
     const double t = c.t1;
     system.add(std::make_unique<SurfaceLoad>(
         c.grid, system.dofs(), std::move(facets),

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "geompm/boundary/fixities.hpp"
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -44,7 +45,7 @@ std::vector<ResolvedGridMotion> resolve_grid_motions(const Mesh& mesh,
     r.velocity = m.velocity;
     for (int d = 0; d < 3; ++d) {
       if (m.components[d].empty()) continue;
-      r.components[d] = Expression(m.components[d]);
+      r.components[d] = Expression(m.components[d], component_place(m.source, d));
       for (Index n : r.nodes) {
         const auto [at, added] = driven.try_emplace({n, d}, &m);
         if (!added) {

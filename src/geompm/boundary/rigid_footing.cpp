@@ -6,6 +6,7 @@
 
 #include "geompm/boundary/grid_motions.hpp"
 #include "geompm/core/byte_archive.hpp"
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -183,7 +184,8 @@ FootingContactForce footing_contact(const FootingPose& pose, const FootingContac
 }
 
 RigidFooting::RigidFooting(const spec::RigidFooting& spec, int dim) : spec_(spec), dim_(dim) {
-  for (int d = 0; d < dim; ++d) components_[d] = Expression(spec.components[d]);
+  for (int d = 0; d < dim; ++d)
+    components_[d] = Expression(spec.components[d], component_place(spec.source, d));
 }
 
 Vec3 RigidFooting::displacement(double t0, double t1) const {

@@ -9,6 +9,12 @@ std::string SourceLocation::describe() const {
   return out;
 }
 
+std::string component_place(const SourceLocation& where, int component) {
+  static const char* names[3] = {"x", "y", "z"};
+  return where.describe() + " (its " + (component >= 0 && component < 3 ? names[component] : "?") +
+         " component)";
+}
+
 InputError::InputError(const SourceLocation& where, const std::string& what)
     : std::runtime_error(where.describe() + ": " + what) {}
 

@@ -17,6 +17,10 @@ struct SourceLocation {
   std::string describe() const;  // "model.yaml:12: phases[1].gravity"
 };
 
+/// "model.yaml:23: phases[1].loads[0] (its y component)": a component (0, 1, 2) of a vector
+/// given at `where`, for messages about one of its values.
+std::string component_place(const SourceLocation& where, int component);
+
 /// Bad input: a model file, a mesh file or a command-line argument. Exit code 2.
 class InputError : public std::runtime_error {
  public:
@@ -29,6 +33,15 @@ class InputError : public std::runtime_error {
 class RunError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// An expression of the model file that gives NaN or infinity where it is evaluated (its message
+/// names the expression, where it was given and the arguments). Met in a run, it stops the run
+/// (exit code 3); where it is evaluated while the model is built, the builder makes it an
+/// InputError.
+class NonFiniteValue : public RunError {
+ public:
+  using RunError::RunError;
 };
 
 /// A material parameter that is missing or out of range; the model reader turns it into an

@@ -1,9 +1,13 @@
 #include "geompm/core/expression.hpp"
 
+#include <fmt/format.h>
 #include <muParser.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -22,7 +26,9 @@ struct Expression::Impl {
     parser.DefineConst("e", M_E);
     parser.SetExpr(text);
     parser.Eval();  // compiles now, so a bad expression fails while the model is read
+    for (const auto& [name, address] : parser.GetUsedVar()) used += name;
   }
+  std::string used;  // the variables it uses, "xt" (for messages)
 };
 
 Expression::Expression() : Expression("0") {}
@@ -35,11 +41,16 @@ Expression::Expression(const std::string& text) : text_(text) {
   }
 }
 
-Expression::Expression(const Expression& other) : Expression(other.text_) {}
+Expression::Expression(const std::string& text, std::string where) : Expression(text) {
+  where_ = std::move(where);
+}
+
+Expression::Expression(const Expression& other) : Expression(other.text_) { where_ = other.where_; }
 
 Expression& Expression::operator=(const Expression& other) {
   if (this != &other) {
     text_ = other.text_;
+    where_ = other.where_;
     impl_ = std::make_unique<Impl>(other.text_);
   }
   return *this;
@@ -52,7 +63,20 @@ double Expression::operator()(double x, double y, double z, double t) const {
   impl_->y = y;
   impl_->z = z;
   impl_->t = t;
-  return impl_->parser.Eval();
+  const double value = impl_->parser.Eval();
+  if (!std::isfinite(value)) {
+    std::string at;
+    const std::pair<char, double> arguments[] = {{'x', x}, {'y', y}, {'z', z}, {'t', t}};
+    for (const auto& [name, v] : arguments)
+      if (impl_->used.find(name) != std::string::npos)
+        at += fmt::format("{}{} = {:g}", at.empty() ? " at " : ", ", name, v);
+    throw NonFiniteValue(fmt::format(
+        "{}{}the expression '{}' is {}{}; expected a finite number (a division by zero, the log "
+        "of 0, the root of a negative number?)",
+        where_, where_.empty() ? "" : ": ", text_,
+        std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf"), at));
+  }
+  return value;
 }
 
 }  // namespace geompm

@@ -13,10 +13,15 @@ class Expression {
   /// Parses `text`; throws std::invalid_argument with muparser's message if it is not a valid
   /// expression of x, y, z, t (constants pi and e are defined).
   explicit Expression(const std::string& text);
+  /// The same, with where it was given ("model.yaml:23: phases[1].loads[0] force[1]"), named
+  /// by the error a non-finite value throws.
+  Expression(const std::string& text, std::string where);
   Expression(const Expression& other);
   Expression& operator=(const Expression& other);
   ~Expression();
 
+  /// The value; throws NonFiniteValue (naming the expression, where it was given and the
+  /// arguments) if it is NaN or infinite: no such value may pass silently into a run.
   double operator()(double x, double y, double z, double t) const;
   double at_time(double t) const { return (*this)(0.0, 0.0, 0.0, t); }
   const std::string& text() const { return text_; }
@@ -24,7 +29,7 @@ class Expression {
 
  private:
   struct Impl;
-  std::string text_;
+  std::string text_, where_;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 
 #include "geompm/core/error.hpp"
@@ -18,8 +20,7 @@ HistoryWriter::HistoryWriter(const std::filesystem::path& file,
     header += columns[i];
   }
   header += '\n';
-  out_ << header << std::flush;
-  size_ = header.size();
+  write(header);
 }
 
 void HistoryWriter::check_resumable(const std::filesystem::path& file, std::uintmax_t size) {
@@ -49,8 +50,26 @@ void HistoryWriter::append(const std::vector<double>& values) {
     row += fmt::format("{:.10g}", values[i]);
   }
   row += '\n';
-  out_ << row << std::flush;  // a stopped run keeps every finished step
-  size_ += row.size();
+  write(row);  // flushed: a stopped run keeps every finished step
+}
+
+// A full disk or a file size limit must stop the run (RunError, exit 3), not let it finish with
+// a history cut mid-line: the stream is checked after every flush, and a row written in part is
+// cut off again, so that the file ends with the last whole row.
+void HistoryWriter::write(const std::string& text) {
+  errno = 0;
+  out_ << text << std::flush;
+  if (out_) {
+    size_ += text.size();
+    return;
+  }
+  const int reason = errno;
+  out_.close();
+  std::error_code ignored;
+  std::filesystem::resize_file(file_, size_, ignored);
+  throw RunError(fmt::format(
+      "cannot write {}: {}; the file holds every row written before (is the disk full?)",
+      file_.string(), reason ? std::strerror(reason) : "the write failed"));
 }
 
 std::size_t CsvTable::column(const std::string& name, const std::string& file) const {

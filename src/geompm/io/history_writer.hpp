@@ -21,13 +21,16 @@ class HistoryWriter {
                 std::uintmax_t size);
   /// Throws the InputError the resuming constructor would: `file` missing or under `size` bytes.
   static void check_resumable(const std::filesystem::path& file, std::uintmax_t size);
-  /// Appends one row (as many values as columns; full precision) and flushes.
+  /// Appends one row (as many values as columns; full precision) and flushes. Throws RunError
+  /// if the row cannot be written (the file is cut back to its last whole row).
   void append(const std::vector<double>& values);
   const std::filesystem::path& path() const { return file_; }
   /// Bytes in the file so far.
   std::uintmax_t size() const { return size_; }
 
  private:
+  void write(const std::string& text);
+
   std::filesystem::path file_;
   std::ofstream out_;
   std::size_t columns_;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "geompm/io/input_file.hpp"
 #include "geompm/io/model_reader_sections.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/solver/linear_solver.hpp"
@@ -107,12 +108,11 @@ spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory,
   std::filesystem::path path(given);
   if (path.is_relative()) path = std::filesystem::path(model_directory) / path;
   path = path.lexically_normal();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
+  if (const std::string why = unreadable_file_reason(path); !why.empty())
     file.fail(
-        fmt::format("mesh file '{}' not found (looked for {}; a relative path starts at the "
+        fmt::format("mesh file '{}' {} (looked for {}; a relative path starts at the "
                     "model file's directory)",
-                    given, path.string()));
+                    given, why, path.string()));
   mesh.file = path.string();
   return mesh;
 }
@@ -217,9 +217,12 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   if (auto floor = section.find("pressure_stabilisation_floor"))
     numerics.pressure_stabilisation_floor = read_non_negative(*floor);
   if (auto layers = section.find("buffer_layers")) {
+    // Each layer is a ring of cells around the occupied ones; beyond a few the whole mesh is
+    // active, and a count in the millions only costs time.
     numerics.buffer_layers = layers->integer();
-    if (numerics.buffer_layers < 0)
-      layers->fail(fmt::format("expected a whole number >= 0, found {}", numerics.buffer_layers));
+    if (numerics.buffer_layers < 0 || numerics.buffer_layers > spec::max_buffer_layers)
+      layers->fail(fmt::format("expected a whole number from 0 to {}, found {}",
+                               spec::max_buffer_layers, numerics.buffer_layers));
   }
   if (auto lost = section.find("lost_points"))
     numerics.lost_points = lost->choice({"stop", "remove"}) == "remove"
@@ -249,11 +252,12 @@ spec::Numerics read_numerics(const yaml::Node& node) {
 }  // namespace model_reader
 
 spec::Model read_model(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error))
+  const std::string why = unreadable_file_reason(path);
+  if (why == "not found")
     throw InputError(SourceLocation{path, "", 0}, "the model file does not exist");
-  if (!std::filesystem::is_regular_file(path, error))
-    throw InputError(SourceLocation{path, "", 0}, "not a file (expected a YAML or JSON model)");
+  if (!why.empty())
+    throw InputError(SourceLocation{path, "", 0},
+                     "the model file " + why + " (expected a YAML or JSON model)");
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();

@@ -189,12 +189,18 @@ spec::Output read_output(const yaml::Node& node, const Context& context) {
   if (auto checkpoint = section.find_non_empty("checkpoint"))
     output.checkpoint = read_checkpoint_schedule(*checkpoint);
   std::vector<std::string> columns = engine_columns;
-  if (auto histories = section.find_non_empty("history"))
+  if (auto histories = section.find_non_empty("history")) {
+    // Each column is summed over its points or nodes every step, and a row of the CSV per step
+    // holds them all: a few thousand is already far more than a plot can show.
+    if (histories->items().size() > spec::max_history_columns)
+      histories->fail(fmt::format("{} history columns; at most {} may be recorded",
+                                  histories->items().size(), spec::max_history_columns));
     for (const yaml::Node& item : histories->items()) {
       spec::History history = read_history(item, context, output.histories);
       columns.push_back(history.name);
       output.histories.push_back(std::move(history));
     }
+  }
   if (auto plots = section.find_non_empty("plots"))
     for (const yaml::Node& item : plots->items())
       output.plots.push_back(read_plot(item, columns, output.plots));

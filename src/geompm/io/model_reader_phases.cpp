@@ -57,6 +57,25 @@ spec::TimeStepping read_time_step(const yaml::Node& node) {
   return step;
 }
 
+// A phase that needs more steps than any run could take would never end (10^20 steps of a
+// nanosecond's work is 3000 years), and a step so small that adding it leaves the time where it
+// was would repeat for ever: both are refused with what the numbers imply.
+void check_step_count(const yaml::Node& node, double duration, const spec::TimeStepping& step) {
+  const double fewest = duration / step.max;
+  if (fewest > spec::max_steps_per_phase)
+    node.fail(
+        fmt::format("the phase's duration {:g} takes at least {:.3g} steps of the largest "
+                    "time step {:g}; a phase may take at most {:g}: raise the time step "
+                    "(max) or shorten the duration",
+                    duration, fewest, step.max, spec::max_steps_per_phase));
+  if (step.min < 1e-12 * duration)
+    node.fail(
+        fmt::format("the smallest time step {:g} is below 1e-12 of the phase's duration "
+                    "{:g}: such a step would not advance the time (give a larger min, or "
+                    "a larger initial step, of which min is 1e-3 by default)",
+                    step.min, duration));
+}
+
 spec::Dynamics read_dynamics(const yaml::Node& node) {
   spec::Dynamics dynamics;
   if (node.is_scalar()) {
@@ -445,7 +464,9 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
       name.fail(fmt::format("the phase name '{}' is already used by {} (line {})", phase.name,
                             other.source.key_path, other.source.line));
   if (auto duration = section.find("duration")) phase.duration = read_positive(*duration);
-  phase.time_step = read_time_step(section.required("time_step"));
+  const yaml::Node time_step = section.required("time_step");
+  phase.time_step = read_time_step(time_step);
+  check_step_count(time_step, phase.duration, phase.time_step);
   if (auto dynamics = section.find("dynamics")) phase.dynamics = read_dynamics(*dynamics);
   if (auto newton = section.find_non_empty("newton")) phase.newton = read_newton(*newton);
   if (auto gravity = section.find("gravity")) phase.gravity = read_gravity(*gravity, context);
@@ -492,6 +513,7 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
     phase.structure_drives = read_structure_drives(*structures, context);
   if (auto loads = section.find_non_empty("surface_loads"))
     phase.surface_loads = read_surface_loads(*loads, context);
+  check_phase_expressions(phase);
   return phase;
 }
 

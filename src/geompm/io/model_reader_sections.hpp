@@ -49,6 +49,9 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context);
 std::vector<spec::PointSet> read_point_sets(const yaml::Node& node, Context& context);
 std::vector<spec::NodeSet> read_node_sets(const yaml::Node& node, Context& context);
 std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context);
+/// The phase's expressions of time evaluated at its start and end; a non-finite value is an
+/// InputError naming the expression and its place (model_reader_phase_values.cpp).
+void check_phase_expressions(const spec::Phase& phase);
 /// A phase's `surface_loads` (model_reader_surface_loads.cpp).
 std::vector<spec::SurfaceLoad> read_surface_loads(const yaml::Node& node, const Context& context);
 spec::Output read_output(const yaml::Node& node, const Context& context);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 
+#include "geompm/io/input_file.hpp"
 #include "geompm/io/model_reader_sections.hpp"
 
 namespace geompm::model_reader {
@@ -108,12 +109,12 @@ std::string read_mesh_file(const yaml::Node& node, const std::string& directory)
   std::filesystem::path path(given);
   if (path.is_relative()) path = std::filesystem::path(directory) / path;
   path = path.lexically_normal();
-  std::error_code error;
-  if (given.empty() || !std::filesystem::is_regular_file(path, error))
+  const std::string why = given.empty() ? "not found" : unreadable_file_reason(path);
+  if (!why.empty())
     node.fail(fmt::format(
-        "the structure's mesh file '{}' not found (looked for {}; a relative path starts at the "
+        "the structure's mesh file '{}' {} (looked for {}; a relative path starts at the "
         "model file's directory)",
-        given, path.string()));
+        given, why, path.string()));
   return path.string();
 }
 

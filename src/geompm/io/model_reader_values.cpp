@@ -3,6 +3,7 @@
 #include <muParser.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "geompm/core/expression.hpp"
@@ -27,6 +28,15 @@ std::vector<std::string> used_variables(const std::string& text) {
   std::vector<std::string> names;
   for (const auto& [name, address] : parser.GetUsedVar()) names.push_back(name);
   return names;
+}
+
+// The value of an expression without variables.
+double constant_value(const std::string& text) {
+  mu::Parser parser;
+  parser.DefineConst("pi", M_PI);
+  parser.DefineConst("e", M_E);
+  parser.SetExpr(text);
+  return parser.Eval();
 }
 
 }  // namespace
@@ -70,6 +80,21 @@ std::string read_expression(const yaml::Node& node, const std::vector<std::strin
     if (std::find(variables.begin(), variables.end(), name) == variables.end())
       node.fail(fmt::format("the expression '{}' uses '{}', but here it may use only {}", text,
                             name, variables.empty() ? "constants" : yaml::join(variables)));
+  // A constant ("1/0", "log(0)") has one value: a non-finite one is refused here, at its line.
+  if (used.empty()) {
+    const double value = constant_value(text);
+    if (!std::isfinite(value))
+      node.fail(
+          fmt::format("the expression '{}' is {}; expected a finite number (a division by "
+                      "zero, the log of 0, the root of a negative number?)",
+                      text, std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf")));
+    const double magnitude = std::abs(value);
+    if (magnitude > yaml::largest_magnitude || (value != 0 && magnitude < yaml::smallest_magnitude))
+      node.fail(
+          fmt::format("the expression '{}' is {:g}; expected 0 or a magnitude between {:g} "
+                      "and {:g}",
+                      text, value, yaml::smallest_magnitude, yaml::largest_magnitude));
+  }
   return text;
 }
 

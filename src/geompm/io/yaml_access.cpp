@@ -61,7 +61,7 @@ std::string Node::describe() const {
   return "'" + node_.Scalar() + "'";
 }
 
-double Node::number() const {
+double Node::finite_number() const {
   double value = 0.0;
   if (!node_.IsScalar() || is_quoted(node_) || !YAML::convert<double>::decode(node_, value))
     fail("expected a number, found " + describe());
@@ -69,10 +69,24 @@ double Node::number() const {
   return value;
 }
 
+double Node::number() const {
+  const double value = finite_number();
+  // No quantity in any consistent units comes near these (docs/user-guide.md, "How values are
+  // written"); beyond them, products in the arithmetic of a step overflow or underflow, and the
+  // run would stop on a non-finite residual, far from the value at fault.
+  const double magnitude = std::abs(value);
+  if (magnitude > largest_magnitude || (value != 0 && magnitude < smallest_magnitude))
+    fail(fmt::format("expected a number of magnitude between {:g} and {:g} (or 0), found {}",
+                     smallest_magnitude, largest_magnitude, describe()));
+  return value;
+}
+
 int Node::integer() const {
-  const double value = number();
-  if (value != std::floor(value) || value < INT_MIN || value > INT_MAX)
-    fail("expected a whole number, found " + describe());
+  const double value = finite_number();
+  if (value != std::floor(value)) fail("expected a whole number, found " + describe());
+  if (value < INT_MIN || value > INT_MAX)
+    fail(fmt::format("expected a whole number between {} and {}, found {}", INT_MIN, INT_MAX,
+                     describe()));
   return static_cast<int>(value);
 }
 

@@ -23,6 +23,12 @@
 
 namespace geompm::yaml {
 
+/// The magnitudes a number of the model file may have (besides 0): wide enough for any quantity
+/// in any consistent units (N-mm-t densities of 1e-9, moduli of 1e12 Pa), narrow enough that the
+/// products a step forms stay far from overflow and underflow.
+inline constexpr double largest_magnitude = 1e20;
+inline constexpr double smallest_magnitude = 1e-20;
+
 class Map;
 
 /// One value of the document with the key path ("phases[1].gravity") and line that lead to it.
@@ -43,7 +49,8 @@ class Node {
   /// How the value looks, for messages: "'abc'", "the quoted text \"1\"", "a list", "a map".
   std::string describe() const;
 
-  /// A finite number written without quotes.
+  /// A finite number written without quotes, 0 or of a magnitude in [smallest_magnitude,
+  /// largest_magnitude].
   double number() const;
   /// A whole number that fits an int.
   int integer() const;
@@ -66,6 +73,8 @@ class Node {
   std::vector<std::pair<std::string, Node>> entries() const;
 
  private:
+  double finite_number() const;
+
   YAML::Node node_;
   std::string path_;
   int line_;

@@ -3,16 +3,41 @@
 #include <fmt/format.h>
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "geompm/core/memory.hpp"
 #include "geompm/mesh/gmsh_session.hpp"
 
 namespace geompm {
 
 namespace {
+
+// Gmsh meshes whatever it is asked to, until the memory runs out: the cells are estimated first
+// (about 2 triangles per h^2, 6 tetrahedra per h^3, the refinement box at its own size) and a
+// mesh that Gmsh could not hold (some 500 bytes a cell at least) is refused with the estimate.
+void check_size(const char* what, int dim, const Vec3& size, double h,
+                const std::optional<RefineBox>& refine_box, double h_refined) {
+  const double per_box = dim == 3 ? 6.0 : 2.0;
+  double volume = 1.0, refined = refine_box ? 1.0 : 0.0;
+  for (int i = 0; i < dim; ++i) {
+    volume *= size[i];
+    if (refine_box) refined *= std::max(0.0, refine_box->second[i] - refine_box->first[i]);
+  }
+  const double cells = per_box * (volume / std::pow(h, dim) +
+                                  (refine_box ? refined / std::pow(h_refined, dim) : 0.0));
+  constexpr double bytes_per_cell = 500;
+  const double memory = physical_memory_bytes();
+  if (cells > 2e9 || (memory > 0 && cells * bytes_per_cell > memory))
+    throw std::invalid_argument(fmt::format(
+        "{}: h = {:g}{} gives about {:.3g} cells, needing at least {:.3g} GB of memory; this "
+        "machine has {:.3g} GB (and a mesh may have at most 2e9 cells): choose a larger cell size",
+        what, h, refine_box ? fmt::format(" (h_refined = {:g})", h_refined) : "", cells,
+        cells * bytes_per_cell / 1e9, memory / 1e9));
+}
 
 void check_arguments(const char* what, int dim, const Vec3& size, double h,
                      const std::optional<RefineBox>& refine_box, double h_refined) {
@@ -26,6 +51,7 @@ void check_arguments(const char* what, int dim, const Vec3& size, double h,
     throw std::invalid_argument(
         fmt::format("{}: h_refined = {}; expected a positive cell size inside the refinement box",
                     what, h_refined));
+  check_size(what, dim, size, h, refine_box, h_refined);
 }
 
 void add_named_group(int dim, const std::vector<int>& entities, const std::string& name) {

@@ -89,7 +89,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
   std::vector<Index> frontier;
   for (Index c = 0; c < n_cells; ++c)
     if (is_active[c]) frontier.push_back(c);
-  for (int layer = 0; layer < settings_.buffer_layers; ++layer) {
+  for (int layer = 0; layer < settings_.buffer_layers && !frontier.empty(); ++layer) {
     std::vector<Index> next;
     for (Index c : frontier)
       for (Index nb : topology_.cell_neighbours.row(c))

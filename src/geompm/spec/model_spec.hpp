@@ -323,6 +323,15 @@ enum class LostPointPolicy { Stop, Remove };
 /// weights averaged over the point's domain (docs/theory.md §9; rectilinear grids only).
 enum class Interpolation { Standard, DualDomain, Gimp };
 
+/// The most steps a phase may need at its largest time step (docs/user-guide.md, phases).
+inline constexpr double max_steps_per_phase = 1e8;
+
+/// The most columns output.history may have (docs/user-guide.md, output).
+inline constexpr std::size_t max_history_columns = 10000;
+
+/// The most numerics.buffer_layers may be (docs/user-guide.md, numerics).
+inline constexpr int max_buffer_layers = 100;
+
 struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
   Formulation formulation = Formulation::Displacement;  // default of the materials

@@ -1,6 +1,10 @@
 #include "geompm/structures/structure_drive.hpp"
 
+#include <fmt/format.h>
+
 #include <limits>
+
+#include "geompm/core/error.hpp"
 
 namespace geompm {
 
@@ -23,8 +27,10 @@ StructureDrive::StructureDrive(const spec::StructureDrive& drive, Kinematics kin
   velocity_ = drive.velocity;
   for (int k = 0; k < components(); ++k) {
     const int c = drive_component(kinematics, k);
-    if (!drive.motion[c].empty()) motion_[k] = Expression(drive.motion[c]);
-    if (!drive.load[c].empty()) load_[k] = Expression(drive.load[c]);
+    const std::string where = fmt::format("{} (its {} {})", drive.source.describe(),
+                                          c < 3 ? "translation" : "rotation", "xyz"[c % 3]);
+    if (!drive.motion[c].empty()) motion_[k] = Expression(drive.motion[c], where);
+    if (!drive.load[c].empty()) load_[k] = Expression(drive.load[c], where);
   }
 }
 

@@ -1,0 +1,55 @@
+#include "geompm/analysis/motion_check.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace geompm {
+
+namespace {
+
+// A typical cell size: the mesh's extent shared among its cells.
+double typical_cell_size(const Mesh& mesh) {
+  const int dim = mesh.dim();
+  Vec3 lo = mesh.nodes.front(), hi = lo;
+  for (const Vec3& x : mesh.nodes) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  double volume = 1.0;
+  for (int d = 0; d < dim; ++d) volume *= hi(d) - lo(d);
+  return std::pow(volume / std::max<Index>(mesh.num_cells(), 1), 1.0 / dim);
+}
+
+}  // namespace
+
+std::string unfollowed_motions(const Model& model, const PhaseContext& phase) {
+  const MaterialPoints& points = model.points;
+  const int dim = model.mesh.dim();
+  const double floor = motion_shortfall_floor * typical_cell_size(model.mesh);
+  std::string found;
+  for (std::size_t m = 0; m < phase.motions.size(); ++m) {
+    const PhaseContext::Motion& motion = phase.motions[m];
+    Vec3 moved = Vec3::Zero();
+    double mass = 0.0;
+    for (Index p = 0; p < points.size(); ++p)
+      if (points.sets[p] >> motion.set & 1u) {
+        moved += points.mass[p] * points.phase_displacement[p];
+        mass += points.mass[p];
+      }
+    if (!(mass > 0)) continue;  // every driven point left the mesh: reported as lost points
+    moved /= mass;
+    for (int i = 0; i < dim; ++i) {
+      if (!motion.components[i]) continue;
+      const double prescribed = motion.done(i), shortfall = std::abs(moved(i) - prescribed);
+      if (shortfall > motion_shortfall_tolerance * std::abs(prescribed) && shortfall > floor)
+        found += fmt::format(
+            "\n  {} ({}): the point set moved {:.6g} in {}, {:.3g} % of the {:.6g} prescribed",
+            phase.spec->motions[m].source.describe(), phase.spec->motions[m].point_set, moved(i),
+            "xyz"[i], prescribed != 0 ? 100 * moved(i) / prescribed : 0.0, prescribed);
+    }
+  }
+  return found;
+}
+
+}  // namespace geompm
