@@ -1,8 +1,10 @@
 // The geompm command line: run a model, check it, or plot a history.
 //
-// Exit codes: 0 success, 1 bad command line, 2 bad input (model or mesh file, a checkpoint that
-// is missing or cannot be used by --resume), 3 the run stopped (no convergence at the smallest time
-// step, a point left the mesh), 4 an internal error.
+// Exit codes: 0 success, 1 bad command line, 2 bad input (model or mesh file, a model too big for
+// the machine, an output directory that cannot be used, a checkpoint that is missing or cannot be
+// used by --resume), 3 the run stopped (no convergence at the smallest time step, a point left the
+// mesh, a non-finite value, a file that cannot be written, a prescribed motion not followed), 4 an
+// internal error.
 #include <fmt/format.h>
 #include <omp.h>
 #include <CLI/CLI.hpp>
@@ -20,6 +22,7 @@
 #include "geompm/core/error.hpp"
 #include "geompm/core/fnv1a.hpp"
 #include "geompm/io/model_reader.hpp"
+#include "geompm/io/output_directory.hpp"
 #include "geompm/io/plot.hpp"
 #include "geompm/mesh/cell_type.hpp"
 #include "geompm/mesh/gmsh_generate.hpp"
@@ -97,6 +100,11 @@ int mesh_command(const MeshCommand& command) {
     if (!(command.h_refined > 0))
       throw geompm::InputError("--h-refined: expected a size > 0 with --refine");
   }
+  // Where the mesh goes is checked before Gmsh meshes (which would fail only when it writes).
+  const std::filesystem::path file(command.output);
+  if (std::filesystem::is_directory(file))
+    throw geompm::InputError(command.output + ": -o names a directory; expected a .msh file");
+  geompm::prepare_output_directory(file.has_parent_path() ? file.parent_path() : ".");
   try {
     if (box)
       geompm::write_gmsh_box(command.output, vec3(command.origin), vec3(command.size), command.h,

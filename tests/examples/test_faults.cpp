@@ -128,6 +128,12 @@ TEST_F(Faults, UnusableOutputDirectory) {
   EXPECT_EQ(through_file.exit_code, 2) << describe(through_file);
   EXPECT_TRUE(Contains(through_file.err, "'notes.txt' is a file, not a directory"));
 
+  // geompm mesh -o, the same: Gmsh used to fail only when it wrote, as an internal error.
+  const auto mesh = geompm({"mesh", "--size", "1", "1", "--h", "0.5", "-o", "notes.txt/m.msh"});
+  ASSERT_TRUE(mesh.exited) << describe(mesh);
+  EXPECT_EQ(mesh.exit_code, 2) << describe(mesh);
+  EXPECT_TRUE(Contains(mesh.err, "error: notes.txt: cannot use it as the output directory"));
+
   // Root writes into a read-only directory regardless; the check is for everyone else.
   if (geteuid() != 0) {
     fs::create_directories(work() / "locked");

@@ -154,6 +154,55 @@ TEST_F(RunPolicies, LostPointsRemoved) {
   const auto energy = history.column("kinetic_energy");
   EXPECT_NEAR(energy.front(), 50.0, 1e-9) << "1/2 m v^2 of the flyer";
   EXPECT_LT(energy.back(), 1e-2) << "the flyer's kinetic energy left with it";
+
+  // Which points went, and where: on the log and in summary.json (two at t = 0.25, the other two
+  // a step later).
+  EXPECT_TRUE(Contains(r.err, "time 0.25: 2 material point(s) left the mesh and were removed"));
+  static const std::regex point(R"re(point (\d+) would move to \(([-+.0-9eE]+), )re");
+  ASSERT_TRUE(std::regex_search(r.err, match, point)) << describe(r);
+  EXPECT_LT(std::stoi(match[1].str()), 4) << "the flyer's points are 0..3 (the first body)";
+  EXPECT_GT(std::stod(match[2].str()), 6.0);
+  const std::string json = read_text(work() / "out" / "summary.json");
+  static const std::regex listed(
+      R"re(\{\s*"id": (\d+),\s*"time": ([-+.0-9eE]+),\s*"position": \[\s*([-+.0-9eE]+),)re");
+  int count = 0;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), listed);
+       it != std::sregex_iterator(); ++it, ++count) {
+    EXPECT_LT(std::stoi((*it)[1].str()), 4);
+    EXPECT_NEAR(std::stod((*it)[2].str()), 0.275, 0.025 + 1e-9);
+    EXPECT_GT(std::stod((*it)[3].str()), 6.0);
+  }
+  EXPECT_EQ(count, 4) << json;
+}
+
+// A run that stops between two ParaView steps still writes the last converged state: the flyer
+// leaves during step 5, so the points of step 4 (t = 0.2) are the series' last entry.
+TEST_F(RunPolicies, AStoppedRunWritesItsLastConvergedState) {
+  write("model.yaml", geompm::testing::replace_once(flying_block_model(""), "vtk: {every: 1}",
+                                                    "vtk: {every: 1000}"));
+  const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", "model.yaml"});
+  ASSERT_TRUE(r.exited && r.exit_code == 3) << describe(r);
+  const std::string pvd = read_text(work() / "out" / "points.pvd");
+  EXPECT_TRUE(
+      Contains(pvd, "timestep=\"0.2\" group=\"\" part=\"0\" file=\"vtk/points_000004.vtu\""));
+  expect_series_files_exist(work() / "out" / "points.pvd");
+}
+
+// A prescribed displacement the body cannot follow (the oedometer's block of height 1 squeezed by
+// 2) used to end "finished" with the points about half-way; the run now stops and says so.
+TEST_F(RunPolicies, APrescribedMotionTheBodyCannotFollowStopsTheRun) {
+  write("model.yaml", geompm::testing::replace_once(
+                          geompm::testing::example_text("oedometer/oedometer.yaml"),
+                          "displacement: [~, \"-0.1*t\"]", "displacement: [~, \"-2*t\"]"));
+  const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", "model.yaml"});
+  ASSERT_TRUE(r.exited) << describe(r);
+  EXPECT_EQ(r.exit_code, 3) << describe(r);
+  EXPECT_TRUE(Contains(r.err,
+                       "phase 'compression': the points did not follow the displacement "
+                       "prescribed to them"));
+  EXPECT_TRUE(Contains(r.err, "phases[0].prescribed_motion[0] (top): the point set moved"));
+  EXPECT_TRUE(Contains(r.err, "of the -2 prescribed"));
+  EXPECT_TRUE(Contains(read_text(work() / "out" / "summary.json"), "\"status\": \"stopped\""));
 }
 
 TEST_F(RunPolicies, AllPointsRemoved) {

@@ -30,15 +30,17 @@ std::string unfollowed_motions(const Model& model, const PhaseContext& phase) {
   std::string found;
   for (std::size_t m = 0; m < phase.motions.size(); ++m) {
     const PhaseContext::Motion& motion = phase.motions[m];
+    // Mass-weighted, as the displacement history of a point set (volume-weighted if weightless).
     Vec3 moved = Vec3::Zero();
-    double mass = 0.0;
+    double weight = 0.0;
     for (Index p = 0; p < points.size(); ++p)
       if (points.sets[p] >> motion.set & 1u) {
-        moved += points.mass[p] * points.phase_displacement[p];
-        mass += points.mass[p];
+        const double w = points.mass[p] > 0 ? points.mass[p] : points.volume[p];
+        moved += w * points.phase_displacement[p];
+        weight += w;
       }
-    if (!(mass > 0)) continue;  // every driven point left the mesh: reported as lost points
-    moved /= mass;
+    if (!(weight > 0)) continue;  // every driven point left the mesh: reported as lost points
+    moved /= weight;
     for (int i = 0; i < dim; ++i) {
       if (!motion.components[i]) continue;
       const double prescribed = motion.done(i), shortfall = std::abs(moved(i) - prescribed);

@@ -196,9 +196,10 @@ std::vector<std::filesystem::path> OutputWriter::plots() {
 }
 
 void OutputWriter::append_history(const std::vector<double>& values) {
-  // A NaN or infinity never reaches the results: the run stops with the step before it.
+  // An infinity never reaches the results: the run stops with the step before it. (NaN is the
+  // value of a quantity that has none, the mean of a point set whose points all left the mesh.)
   for (std::size_t k = 0; k < values.size() && k < columns_.size(); ++k)
-    if (!std::isfinite(values[k]))
+    if (std::isinf(values[k]))
       throw RunError(fmt::format(
           "the history column '{}' would be {} at time {:g}: the model's values lie outside "
           "what the arithmetic can follow (check the magnitudes of its parameters and loads); "

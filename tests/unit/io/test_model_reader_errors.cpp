@@ -510,7 +510,7 @@ const std::vector<MalformedCase> kMalformedCases = {
      {{"buffer_layers: 2", "buffer_layers: -1"}},
      "buffer_layers:",
      "numerics.buffer_layers",
-     ">= 0"},
+     "from 0 to 100"},
     {"unknown_linear_solver",
      {{"linear_solver: sparse_lu", "linear_solver: petsc"}},
      "petsc",
