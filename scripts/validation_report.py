@@ -1,8 +1,10 @@
 #!/usr/bin/python3
-"""Runs the verification cases of examples/ with the geompm binary and writes docs/validation.md.
+"""Runs the verification cases of examples/ with the geompm binary and writes the long validation
+report (every variant tried; default build/validation_long_report.md, --output FILE) and the plots
+of docs/validation/. docs/validation.md summarises it.
 
 Usage: /usr/bin/python3 scripts/validation_report.py [--binary build/geompm] [--sections footing]
-                                                     [--jobs 2] [--work DIR]
+                                                     [--jobs 2] [--work DIR] [--output FILE]
 Every number in the report is computed here from the runs; the references are cited inline.
 Needs the Debian packages python3-numpy, python3-meshio (installed by scripts/setup.sh) and
 python3-matplotlib (for the footing figures; `sudo apt-get install python3-matplotlib`).
@@ -10,7 +12,7 @@ python3-matplotlib (for the footing figures; `sudo apt-get install python3-matpl
 --sections NAME[,NAME...] re-runs only the named sections (bar, column, oedometer, strip (§4-§6),
 circular (§7), mohr_coulomb_footing (§8), frictional, cylinder, triangles, earth_pressure,
 dilatancy_on_triangles (§13); footing = §4-§8) and
-keeps the other sections of the existing docs/validation.md as they are (the file is split on its
+keeps the other sections of the existing report as they are (the file is split on its
 "## N." headings). --work keeps the runs in DIR and reuses a run whose model text is unchanged
 (the sections that run many models: strip, circular, mohr_coulomb_footing, frictional, triangles,
 earth_pressure, dilatancy_on_triangles). --jobs runs that many footing models at once, each on one thread.
@@ -5500,6 +5502,8 @@ def main():
                         + " (default: all)")
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--work", default=None)
+    parser.add_argument("--output", default=os.path.join(ROOT, "build", "validation_long_report.md"),
+                        help="the long report with every variant (docs/validation.md summarises it)")
     args = parser.parse_args()
     wanted = []
     for s in (s.strip() for s in args.sections.split(",") if s.strip()):
@@ -5510,7 +5514,8 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="geompm_validation_")
     os.makedirs(work, exist_ok=True)
     os.makedirs(FIGURES, exist_ok=True)
-    report = os.path.join(ROOT, "docs", "validation.md")
+    report = args.output
+    os.makedirs(os.path.dirname(os.path.abspath(report)), exist_ok=True)
     existing = {}
     if set(wanted) != set(SECTIONS) and os.path.exists(report):
         with open(report) as f:
@@ -5531,7 +5536,7 @@ def main():
         f.write("\n".join(lines).rstrip("\n") + "\n")
     if not keep_work:
         shutil.rmtree(work)
-    print("wrote docs/validation.md")
+    print("wrote " + report)
 
 
 if __name__ == "__main__":
