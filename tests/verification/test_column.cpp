@@ -70,7 +70,10 @@ TEST_P(ColumnTest, OneLoadStepMatchesTheHenckyClosedForm) {
   ASSERT_LE(r.size(), 11u);
   ASSERT_GE(r.size(), 3u);
   std::string history;
-  for (double value : r) history += " " + std::to_string(value);
+  for (double value : r) {
+    history += ' ';  // not " " + string: GCC 12 warns (-Wrestrict, wrongly) about that
+    history += std::to_string(value);
+  }
   // Pairs in the asymptotic range and above the round-off floor (about 1e-13 here) count.
   int checked = 0;
   for (std::size_t k = 0; k + 1 < r.size(); ++k)

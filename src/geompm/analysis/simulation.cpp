@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "geompm/analysis/output_folder.hpp"
 #include "geompm/core/error.hpp"
+#include "geompm/core/interrupt.hpp"
 #include "geompm/io/checkpoint_file.hpp"
 
 namespace geompm {
@@ -52,11 +54,11 @@ Simulation::~Simulation() = default;
 
 void Simulation::start() {
   // What an earlier run in the same directory left must not be mistaken for this run's: its
-  // checkpoint (a later --resume would go back to it), its summary, a half-written checkpoint.
-  const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
-  std::filesystem::remove(checkpoint);
-  std::filesystem::remove(checkpoint_temporary(checkpoint));
-  std::filesystem::remove(options_.output_dir / "summary.json");
+  // ParaView files, plots, history, summary and checkpoint (a later --resume would go back to it).
+  const auto removed = remove_previous_run(options_.output_dir);
+  if (options_.log && !removed.empty())
+    *options_.log << fmt::format("removed {} files of an earlier run from {}\n", removed.size(),
+                                 options_.output_dir.string());
   output_ = std::make_unique<OutputWriter>(model_, options_.output_dir);
   output_->initial();
   summary_.history_file = output_->history_file();
@@ -108,6 +110,7 @@ void Simulation::begin_phase() {
 // when that cannot go on; write and count a converged one.
 void Simulation::run_phase() {
   while (!control_->finished()) {
+    if (interrupt_requested()) stop_on_interrupt();
     const double t = control_->time(), dt = control_->trial_step();
     const StepResult step = stepper_.advance(*phase_, t, dt);
     output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
@@ -202,6 +205,21 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   if (!due) return;
   save(checkpoint_file(options_.output_dir));
   last_checkpoint_ = Clock::now();
+}
+
+// Between steps: the run ends as one that stopped, with a checkpoint of the last converged step
+// (when checkpoints are on) from which --resume goes on.
+void Simulation::stop_on_interrupt() {
+  update_clocks();
+  const spec::Checkpoint& schedule = model_.spec.output.checkpoint;
+  const bool checkpoints =
+      options_.checkpoint_every.value_or(schedule.every_steps) > 0 || schedule.every_minutes > 0;
+  if (checkpoints) save(checkpoint_file(options_.output_dir));
+  stop(fmt::format(
+      "interrupted ({}) in phase '{}' after step {}; results up to time {:g} are in "
+      "{}{}",
+      interrupt_signal_name(), phase_->spec->name, step_number_, time_,
+      options_.output_dir.string(), checkpoints ? "; geompm run --resume goes on from there" : ""));
 }
 
 void Simulation::update_clocks() {
