@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 echo "Building the geompm executable only (no tests or benchmarks): the first build takes about" \
-  "BUILD_MINUTES minutes on two cores, a rebuild seconds."
+  "5 minutes on two cores, a rebuild seconds."
 bash scripts/build.sh geompm
 example=examples/strip_footing/strip_footing.yaml
 echo "Running the main example (about a minute)."
