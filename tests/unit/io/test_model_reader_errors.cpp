@@ -494,7 +494,7 @@ const std::vector<MalformedCase> kMalformedCases = {
     {"plot_reference_without_value",
      {{"y_scale: -1}", "y_scale: -1, reference: {label: Prandtl}}"}},
      "reference:",
-     "output.plots[0].reference",
+     "output.plots[0].reference.y",
      "missing required key 'y'"},
     {"unknown_lost_point_policy",
      {{"lost_points: remove", "lost_points: keep"}},
