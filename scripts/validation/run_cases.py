@@ -61,6 +61,8 @@ def run(case, binary, work):
 def row(case, value, verdict):
     ref = case["reference"]
     shown = "—" if value is None else f"{value:.4g}"
+    if value is not None and ref["value"] != 0:
+        shown += f" ({100 * (value / ref['value'] - 1):+.2f} %)"
     return (f"| {case['title']} | {ref['value']:g} ({ref['source']}) | {shown} | "
             f"{case['tolerance_text']} | {verdict} |")
 
