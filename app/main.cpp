@@ -21,6 +21,7 @@
 #include "geompm/analysis/run.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/fnv1a.hpp"
+#include "geompm/core/interrupt.hpp"
 #include "geompm/io/model_reader.hpp"
 #include "geompm/io/output_directory.hpp"
 #include "geompm/io/plot.hpp"
@@ -39,6 +40,7 @@ struct RunCommand {
 
 int run_command(const RunCommand& command) {
   if (command.threads > 0) omp_set_num_threads(command.threads);
+  geompm::install_interrupt_handler();  // Ctrl-C: the run stops cleanly between steps (exit 3)
   // Read and build everything before anything is written, so bad input leaves no output.
   const auto spec = geompm::read_model(command.model_file);
   auto model = geompm::build_model(spec);
@@ -139,7 +141,43 @@ CLI::App* add_run_command(CLI::App& app, RunCommand& options) {
   return run;
 }
 
-CLI::App* add_plot_command(CLI::App& app, geompm::PlotRequest& request, std::string& png) {
+struct PlotCommand {
+  geompm::PlotRequest request;
+  std::string png = "plot.png";
+  std::vector<std::string> references, reference_labels;
+};
+
+/// "5.14" is a line, "5.14:5.40" a band; the labels go with the references in order.
+std::vector<geompm::PlotReference> plot_references(const PlotCommand& command) {
+  std::vector<geompm::PlotReference> references;
+  for (std::size_t i = 0; i < command.references.size(); ++i) {
+    const std::string& text = command.references[i];
+    geompm::PlotReference reference;
+    try {
+      const std::size_t colon = text.find(':');
+      reference.lo = std::stod(text.substr(0, colon));
+      reference.hi = colon == std::string::npos ? reference.lo : std::stod(text.substr(colon + 1));
+    } catch (const std::exception&) {
+      throw geompm::InputError("--reference: expected a value (5.14) or a band (5.14:5.40), got '" +
+                               text + "'");
+    }
+    if (reference.hi < reference.lo)
+      throw geompm::InputError("--reference: a band is lower:upper, got '" + text + "'");
+    if (i < command.reference_labels.size()) reference.label = command.reference_labels[i];
+    references.push_back(reference);
+  }
+  return references;
+}
+
+int plot_command(PlotCommand& command) {
+  command.request.references = plot_references(command);
+  geompm::plot_history(command.request, command.png);
+  std::cout << "wrote " << command.png << "\n";
+  return 0;
+}
+
+CLI::App* add_plot_command(CLI::App& app, PlotCommand& command) {
+  geompm::PlotRequest& request = command.request;
   auto* plot = app.add_subcommand("plot", "plot columns of a history CSV into a PNG");
   plot->add_option("csv", request.csv, "history CSV file")->required();
   plot->add_option("--x", request.x, "column for the horizontal axis")->default_val("time");
@@ -147,7 +185,14 @@ CLI::App* add_plot_command(CLI::App& app, geompm::PlotRequest& request, std::str
   plot->add_option("--x-scale", request.x_scale, "factor applied to x (e.g. -1)");
   plot->add_option("--y-scale", request.y_scale, "factor applied to y (e.g. -1)");
   plot->add_option("--title", request.title, "plot title");
-  plot->add_option("-o,--output", png, "PNG file to write")->default_val("plot.png");
+  plot->add_option("--x-label", request.x_label, "x axis label: quantity and unit");
+  plot->add_option("--y-label", request.y_label, "y axis label: quantity and unit");
+  plot->add_option("--reference", command.references,
+                   "reference line at a (scaled) y value, or band lower:upper; repeatable")
+      ->type_name("Y[:Y]");
+  plot->add_option("--reference-label", command.reference_labels,
+                   "legend label of each --reference, in order");
+  plot->add_option("-o,--output", command.png, "PNG file to write")->default_val("plot.png");
   return plot;
 }
 
@@ -193,9 +238,8 @@ int main(int argc, char** argv) {
   auto* check =
       app.add_subcommand("check", "validate a model and print a summary, without running");
   check->add_option("model", model_file, "model file")->required();
-  geompm::PlotRequest plot_request;
-  std::string png = "plot.png";
-  auto* plot = add_plot_command(app, plot_request, png);
+  PlotCommand plot_options;
+  auto* plot = add_plot_command(app, plot_options);
   MeshCommand mesh_options;
   auto* mesh = add_mesh_command(app, mesh_options);
 
@@ -210,11 +254,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(run_options);
     if (*check) return check_command(model_file);
     if (*mesh) return mesh_command(mesh_options);
-    if (*plot) {
-      geompm::plot_history(plot_request, png);
-      std::cout << "wrote " << png << "\n";
-      return 0;
-    }
+    if (*plot) return plot_command(plot_options);
   } catch (const geompm::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
-"""Runs the verification cases of examples/ with the geompm binary and writes docs/validation.md.
+"""Runs the verification cases of examples/ with the geompm binary and writes the long validation
+report (every variant tried; default build/validation_long_report.md, --output FILE) and the plots
+of docs/validation/. docs/validation.md summarises it.
 
 Usage: /usr/bin/python3 scripts/validation_report.py [--binary build/geompm] [--sections footing]
-                                                     [--jobs 2] [--work DIR]
+                                                     [--jobs 2] [--work DIR] [--output FILE]
 Every number in the report is computed here from the runs; the references are cited inline.
 Needs the Debian packages python3-numpy, python3-meshio (installed by scripts/setup.sh) and
 python3-matplotlib (for the footing figures; `sudo apt-get install python3-matplotlib`).
@@ -10,7 +12,7 @@ python3-matplotlib (for the footing figures; `sudo apt-get install python3-matpl
 --sections NAME[,NAME...] re-runs only the named sections (bar, column, oedometer, strip (§4-§6),
 circular (§7), mohr_coulomb_footing (§8), frictional, cylinder, triangles, earth_pressure,
 dilatancy_on_triangles (§13); footing = §4-§8) and
-keeps the other sections of the existing docs/validation.md as they are (the file is split on its
+keeps the other sections of the existing report as they are (the file is split on its
 "## N." headings). --work keeps the runs in DIR and reuses a run whose model text is unchanged
 (the sections that run many models: strip, circular, mohr_coulomb_footing, frictional, triangles,
 earth_pressure, dilatancy_on_triangles). --jobs runs that many footing models at once, each on one thread.
@@ -105,7 +107,7 @@ def section_bar(args, work):
     drift = np.max(np.abs(energy - energy[0])) / energy[0]
     shutil.copy(os.path.join(out, "energy.png"), os.path.join(FIGURES, "bar_energy.png"))
     shutil.copy(os.path.join(out, "centre_of_mass_velocity.png"), os.path.join(FIGURES, "bar_velocity.png"))
-    w("## 1. Vibrating bar (Bardenhagen 2002, REFERENCES §1) — reached")
+    w("## 1. Vibrating bar (Bardenhagen 2002, docs/references.md §1) — reached")
     w("")
     w("13 cells along the bar, 2 points per cell along it, trapezoidal Newmark, dt = T/100, five periods.")
     w("")
@@ -135,7 +137,7 @@ def section_column(args, work):
             text = text.replace("initial: 0.05, min: 0.001, max: 0.05", "initial: 1.0, min: 0.001, max: 1.0")
         return text
 
-    w("## 2. Column under self-weight (Coombs & Augarde 2020, REFERENCES §2)")
+    w("## 2. Column under self-weight (Coombs & Augarde 2020, docs/references.md §2)")
     w("")
     w("Stress error measure `err = Σ|σ_p − σ(Y_p)| V0_p / Σ ρ0 g l0 V0_p`; settlement error of the top "
       "point row against the Hencky closed form at the same initial heights. Mesh h = 2 m, 2×2 points "
@@ -209,18 +211,18 @@ def section_column(args, work):
       f"{worst['E = 10 kPa']*100:.2f} % for E = 10 kPa (target 2 %), in plane strain, axisymmetry and 3D, "
       "with gravity in 20 load steps. The stress error falls with the mesh, "
       f"{g[0]:.4f} → {g[1]:.4f} → {g[2]:.4f} for h = 2 → 1 → 0.5 m (rate about "
-      f"{math.log(g[0]/g[2], 2)/2:.1f}), in line with the literature (REFERENCES §2: GIMP converges, "
+      f"{math.log(g[0]/g[2], 2)/2:.1f}), in line with the literature (docs/references.md §2: GIMP converges, "
       "error about 1e-3 at h = 1.56 m, rate about 2 on coarse meshes).")
     w("")
     w("With gravity in one load step, where no point crosses a cell within the step, the settlement is "
       "within 0.03 % in every kinematics and the stress error is the 0.010 expected of piecewise-constant "
-      "cell stresses, with quadratic Newton convergence (REFERENCES §7): this verifies the finite-strain "
+      "cell stresses, with quadratic Newton convergence (docs/references.md §7): this verifies the finite-strain "
       "formulation, the tangent and the three kinematics (GIMP weights equal the standard ones at the "
       "seeded positions, where each domain fills its sub-cell).")
     w("")
     w("Standard MPM and DDMP do not reach the targets with load steps: points crossing cell boundaries "
       "between steps make standard MPM's error grow with refinement instead of shrinking — the behaviour "
-      "the literature reports (REFERENCES §2: error 0.06–0.1 at every h). DDMP (seed §3.6, docs/theory.md "
+      "the literature reports (docs/references.md §2: error 0.06–0.1 at every h). DDMP (seed §3.6, docs/theory.md "
       "§8) removes the jump of a crossing point's forces and lowers the stress error, but integrating with "
       "unevenly spread points after crossings (a cell holding three rows of points is too stiff, its "
       "neighbour with one row too soft) keeps its settlement error above 1 %. GIMP integrates over the "
@@ -1137,7 +1139,7 @@ def section_strip(args, work):
         return f"{kind}_{form}_{nu}"
     runs = runner.batch({cname(*c): strip_text(c[0], c[2], c[1]) for c in combos})
 
-    w("## 4. Rigid strip footing on weightless Tresca soil (Prandtl, REFERENCES §3)")
+    w("## 4. Rigid strip footing on weightless Tresca soil (Prandtl, docs/references.md §3)")
     w("")
     w("`examples/strip_footing/strip_footing.yaml` (rough, steel block: E = 10⁵ s_u, bonded to the "
       "soil and driven by `prescribed_motion` of its points), `strip_footing_smooth.yaml` and "
@@ -1494,7 +1496,7 @@ def section_strip(args, work):
     # for all three footings.
     conv_total = runner.batch({f"{LABEL[rough]}_n{n}": default_numerics(strip_text(rough, n=n))
                                for rough in KINDS for n in conv_levels[rough]})
-    w("## 5. Strip footing: mesh convergence (REFERENCES §3)")
+    w("## 5. Strip footing: mesh convergence (docs/references.md §3)")
     w("")
     w("The models of §4 (mixed p–u, ν = 0.49) with 5, 10 and 20 cells under the half-width "
       "(h = B/10, B/20, B/40) in the fine region [0, 1] × [4, 5], the graded region refined in "
@@ -1659,7 +1661,7 @@ def section_strip(args, work):
     ld_texts.update({f"{k}, incremental": incremental_pressure(t) for k, t in list(ld_texts.items())})
     ld = runner.batch(ld_texts)
     large = ld["ddmp"]
-    w("## 6. Large-deformation strip footing (Kardani et al. 2015, REFERENCES §3)")
+    w("## 6. Large-deformation strip footing (Kardani et al. 2015, docs/references.md §3)")
     w("")
     w("`examples/strip_footing/strip_footing_large_deformation.yaml`: B = 1 m, the domain 10 B wide "
       "and 5 B deep (half modelled), E_u = 100 kPa, ν_u = 0.495, s_u = 1 kPa, weightless, a rough "
@@ -4364,7 +4366,7 @@ def section_triangles(args, work):
     w("")
     w(f"`{STRIP_FILE['rough']}` in the displacement formulation (E = 500 s_u, ν = 0.49 and 0.4999, "
       "10⁻⁶ E in the empty parts of cells), pushed 0.1 B. Reference: Prandtl q/s_u = 2 + π = 5.14 "
-      "(REFERENCES §3).")
+      "(docs/references.md §3).")
     w("")
     w("| mesh | h | ν | q/s_u at 0.05 B | at 0.1 B | mean over 0.08–0.1 B | error of the mean vs 5.14 | "
       "steps | Newton max / mean | points | wall time |")
@@ -5478,7 +5480,7 @@ SECTIONS = {"bar": (1, section_bar), "column": (2, section_column), "oedometer":
 ALIASES = {"footing": ("strip", "circular", "mohr_coulomb_footing")}
 HEADER = ["# geompm validation", "",
           "Generated by `scripts/validation_report.py` from runs of the models in `examples/` "
-          "(do not edit by hand). Reference values and their sources: `shared/validation/REFERENCES.md`. "
+          "(do not edit by hand). Reference values and their sources: `docs/references.md`. "
           "The same cases are asserted in `tests/verification/` (the longest in `tests/validation_long/`).", ""]
 
 
@@ -5500,6 +5502,8 @@ def main():
                         + " (default: all)")
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--work", default=None)
+    parser.add_argument("--output", default=os.path.join(ROOT, "build", "validation_long_report.md"),
+                        help="the long report with every variant (docs/validation.md summarises it)")
     args = parser.parse_args()
     wanted = []
     for s in (s.strip() for s in args.sections.split(",") if s.strip()):
@@ -5510,7 +5514,8 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="geompm_validation_")
     os.makedirs(work, exist_ok=True)
     os.makedirs(FIGURES, exist_ok=True)
-    report = os.path.join(ROOT, "docs", "validation.md")
+    report = args.output
+    os.makedirs(os.path.dirname(os.path.abspath(report)), exist_ok=True)
     existing = {}
     if set(wanted) != set(SECTIONS) and os.path.exists(report):
         with open(report) as f:
@@ -5531,7 +5536,7 @@ def main():
         f.write("\n".join(lines).rstrip("\n") + "\n")
     if not keep_work:
         shutil.rmtree(work)
-    print("wrote docs/validation.md")
+    print("wrote " + report)
 
 
 if __name__ == "__main__":

@@ -72,6 +72,10 @@ class GeompmProcess {
     if (done == pid_) record(status);
     return !waited_;
   }
+  /// Sends `signal_number` (SIGINT: Ctrl-C at a terminal).
+  void signal(int signal_number) {
+    if (!waited_) ::kill(pid_, signal_number);
+  }
   /// SIGKILL, as a crash, a power cut or a batch system's hard limit would end it.
   void kill() {
     if (!waited_) ::kill(pid_, SIGKILL);

@@ -106,7 +106,9 @@ class Checkpoints : public GeompmRunTest<> {
     const bool was_running = run.running();
     run.kill();
     const CommandResult r = run.wait();
-    if (was_running) EXPECT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+    if (was_running) {
+      EXPECT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+    }
     return was_running;
   }
 

@@ -1,5 +1,5 @@
-// Closed form of the elastic column under self-weight (REFERENCES §2; Coombs & Augarde 2020,
-// "AMPLE", Adv. Eng. Softw. 139, §5.1): 1D confined compression, nu = 0.
+// Closed form of the elastic column under self-weight (docs/references.md §2; Coombs & Augarde
+// 2020, "AMPLE", Adv. Eng. Softw. 139, §5.1): 1D confined compression, nu = 0.
 //   Cauchy stress at initial height Y: sigma(Y) = -rho0 g (l0 - Y) (the weight above is conserved)
 //   Hencky law: E ln(lambda) / lambda = sigma, i.e. lambda = exp(-W(s)), s = rho0 g (l0 - Y) / E
 //   displacement u(Y) = int_0^Y (lambda(eta) - 1) d eta.

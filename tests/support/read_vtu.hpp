@@ -60,7 +60,11 @@ inline std::string check_layout(const std::filesystem::path& file) {
 inline ReadVtu read_with_meshio(const std::filesystem::path& file) {
   check_layout(file);
   int status = 0;
-  const std::string output = run_reader("'" + file.string() + "'", status);
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
+  std::string quoted = "'";
+  quoted += file.string();
+  quoted += '\'';
+  const std::string output = run_reader(quoted, status);
   if (status != 0) throw std::runtime_error("read_vtu.py failed:\n" + output);
 
   ReadVtu vtu;

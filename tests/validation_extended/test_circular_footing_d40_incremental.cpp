@@ -17,9 +17,9 @@ using testing::run_footing;
 TEST(CircularFootingValidation, IncrementalPressureEquationReachesCoxEasonHopkinsOnDOver40) {
   // The rough rigid circular footing on h = D/40 pushed to 0.1 D with the incremental pressure
   // equation (docs/validation.md §7): Cox, Eason & Hopkins (1961) N_c = 6.05, target within +5 %
-  // as for the strip (REFERENCES §3), with at most 10 Newton iterations a step. Measured 6.08 at
-  // 0.1 D and 6.08 over 0.08-0.1 D. (The default total equation stops at 0.042 D here with 10
-  // iterations; with 20 it gives 5.68, -6 %.)
+  // as for the strip (docs/references.md §3), with at most 10 Newton iterations a step.
+  // Measured 6.08 at 0.1 D and 6.08 over 0.08-0.1 D. (The default total equation stops at 0.042 D
+  // here with 10 iterations; with 20 it gives 5.68, -6 %.)
   constexpr double kRoughCircle = 6.05;
   const auto& f = run_footing(
       incremental_pressure(testing::strip_mesh(

@@ -21,8 +21,9 @@ namespace geompm {
 namespace {
 
 // Cox, Eason & Hopkins (1961), rigid circular punch on Tresca soil: N_c = 5.69 smooth, 6.05
-// rough (tabulated by Houlsby & Wroth 1983). The target, as for the strip (REFERENCES §3): within
-// +5 % at 0.1 D, here also the mean over 0.08-0.1 D (the curves oscillate as points cross cells).
+// rough (tabulated by Houlsby & Wroth 1983). The target, as for the strip (docs/references.md §3):
+// within +5 % at 0.1 D, here also the mean over 0.08-0.1 D (the curves oscillate as points cross
+// cells).
 constexpr double kSmoothCircle = 5.69;
 constexpr double kRoughCircle = 6.05;
 

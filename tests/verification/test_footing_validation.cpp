@@ -1,9 +1,9 @@
-// Footings against bearing-capacity theory (shared/validation/REFERENCES.md §3; docs/validation.md
+// Footings against bearing-capacity theory (docs/references.md §3; docs/validation.md
 // §4-§8): the models of examples/strip_footing/, circular_footing/ and mohr_coulomb_footing/ on
 // their own mesh (10 cells under the footing's half-width, h = B/20) and, for the rigid-plastic
 // limit, on h = B/10 and B/40 too; each run taking 2-40 s, the whole file about five minutes on
 // one core, plus two minutes for the circular footing on D/40. What is asserted, and why:
-// - the mixed p-u answer does not depend on nu (0.49 against 0.4999, < 2 %, REFERENCES §3) and
+// - the mixed p-u answer does not depend on nu (0.49 against 0.4999, < 2 %, references §3) and
 //   Newton stays at <= 10 iterations per step through plastic flow (issue 3);
 // - the displacement formulation locks at nu = 0.4999 (q/s_u far above Prandtl's 2 + pi) while
 //   the mixed one stays within the O(h) over-estimate the mesh study measured (docs/validation.md
@@ -124,13 +124,13 @@ TEST(StripFootingValidation, MixedPUDoesNotDependOnNuAndNewtonStaysAtTenIteratio
     const double qa = a.q_at(0.1), qb = b.q_at(0.1);
     std::printf("[%s strip, p-u, 0.1 B] q/s_u = %.3f (nu 0.49), %.3f (nu 0.4999)\n",
                 rough ? "rough" : "smooth", qa, qb);
-    // REFERENCES §3: a locking-free answer moves by < 2 % between nu = 0.49 and 0.4999.
+    // docs/references.md §3: a locking-free answer moves by < 2 % between nu = 0.49 and 0.4999.
     EXPECT_LT(std::abs(qb / qa - 1.0), 0.02) << (rough ? "rough" : "smooth");
     // Issue 3: Newton converges in at most 10 iterations per step through plastic flow.
     EXPECT_LE(a.max_iterations(), 10) << (rough ? "rough" : "smooth");
     EXPECT_LE(b.max_iterations(), 10) << (rough ? "rough" : "smooth");
-    // Issue 3 / REFERENCES §3: q/s_u between 5.14 (Prandtl's 2 + pi, an exact limit load) and
-    // 5.40 at a settlement of 0.1 B, with 10 cells under the half-width (h = B/20); measured
+    // Issue 3 / docs/references.md §3: q/s_u between 5.14 (Prandtl's 2 + pi, an exact limit load)
+    // and 5.40 at a settlement of 0.1 B, with 10 cells under the half-width (h = B/20); measured
     // 5.35 and 5.36 with the example's incremental pressure equation and fitted start (5.19 and
     // 5.25 with the total equation; docs/validation.md §4).
     for (const double q : {qa, qb}) {
@@ -170,9 +170,9 @@ TEST(StripFootingValidation, RigidFootingsCarryPrandtlsLoadAtTheirOwnWidth) {
         "[rigid strip, %s, p-u] q/s_u at 0.1 B %.3f (nu 0.49), %.3f (nu 0.4999); mean over "
         "0.08-0.1 B %.3f, %.3f\n",
         name, q_soft, q_stiff, m_soft, m_stiff);
-    // Issue 3 / REFERENCES §3: at a settlement of 0.1 B, 2 + pi <= q/s_u <= 5.40 at both nu, and
-    // the locking-free target: the value moves by < 2 % between nu = 0.49 and 0.4999 (measured
-    // 0.4 % smooth, 0.6 % rough).
+    // Issue 3 / docs/references.md §3: at a settlement of 0.1 B, 2 + pi <= q/s_u <= 5.40 at both
+    // nu, and the locking-free target: the value moves by < 2 % between nu = 0.49 and 0.4999
+    // (measured 0.4 % smooth, 0.6 % rough).
     for (const double q : {q_soft, q_stiff}) {
       EXPECT_GE(q, kPrandtl) << name;
       EXPECT_LE(q, 5.40) << name;
@@ -324,10 +324,10 @@ TEST(CircularFootingValidation, RigidPlasticLimitConvergesToCoxEasonHopkinsSmoot
 
 // The model whose steps start from the last nodal pressure, fitted (docs/theory.md eq. 11.11).
 TEST(StripFootingValidation, IncrementalPressureEquationCarriesStandardMpmToOneB) {
-  // The large-deformation strip of REFERENCES §3 (Kardani et al. 2015 set-up) with standard MPM
-  // and the incremental pressure equation: the run must finish at 1 B, the resistance start near
-  // 2 + pi and rise with embedment (docs/validation.md §6: 5.03 at 0.1 B, 7.61 at 1 B; the default
-  // total equation stops at 0.85 B with standard MPM).
+  // The large-deformation strip of docs/references.md §3 (Kardani et al. 2015 set-up) with standard
+  // MPM and the incremental pressure equation: the run must finish at 1 B, the resistance start
+  // near 2 + pi and rise with embedment (docs/validation.md §6: 5.03 at 0.1 B, 7.61 at 1 B; the
+  // default total equation stops at 0.85 B with standard MPM).
   const std::string example = testing::replace_once(
       testing::example_text("strip_footing/strip_footing_large_deformation.yaml"),
       "vtk: {every: 20}", "vtk: {every: 0}");

@@ -29,7 +29,8 @@
 namespace geompm {
 namespace {
 
-constexpr double kPrandtl = 2.0 + std::numbers::pi;  // q_u / s_u, smooth or rough (REFERENCES §3)
+// q_u / s_u, smooth or rough (docs/references.md §3)
+constexpr double kPrandtl = 2.0 + std::numbers::pi;
 // Martin's (2005) exact N_gamma (rough 14.75, smooth 7.65) and Prandtl's N_c at phi = 30 deg.
 using testing::frictional_footing::kNc;
 using testing::frictional_footing::kNgammaRough;

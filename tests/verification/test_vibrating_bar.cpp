@@ -1,5 +1,5 @@
 // Axial vibration of an elastic bar: Bardenhagen (2002), J. Comput. Phys. 180, §4.2
-// (shared/validation/REFERENCES.md §1). Runs examples/vibrating_bar/vibrating_bar.yaml.
+// (docs/references.md §1). Runs examples/vibrating_bar/vibrating_bar.yaml.
 #include <gtest/gtest.h>
 
 #include <cmath>

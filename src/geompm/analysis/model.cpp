@@ -194,7 +194,7 @@ MeshBounds mesh_bounds(const Mesh& mesh) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const double tol = 1e-9 * (hi - lo).head(dim).norm();
+  const double tol = 1e-9 * head_norm(hi - lo, dim);
   return {lo, hi, tol};
 }
 

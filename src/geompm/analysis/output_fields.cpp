@@ -1,12 +1,30 @@
 #include "geompm/analysis/output_fields.hpp"
 
 #include <cmath>
+#include <string_view>
 
 #include "geompm/core/tensor.hpp"
 
 namespace geompm {
 
-FieldSet point_fields(const Model& model) {
+std::vector<double> equivalent_plastic_strain(const Model& model) {
+  // Where each material keeps it, -1 where it does not.
+  std::vector<int> slot(model.materials.size(), -1);
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    for (int k = 0; k < model.materials[m]->internal_variable_count(); ++k)
+      if (std::string_view(model.materials[m]->internal_variable_name(k)) ==
+          "equivalent_plastic_strain")
+        slot[m] = k;
+  const auto& p = model.points;
+  std::vector<double> strain(p.size(), 0.0);
+  for (Index i = 0; i < p.size(); ++i) {
+    const int k = slot[p.material[i]];
+    if (k >= 0) strain[i] = p.internal[i][k];
+  }
+  return strain;
+}
+
+FieldSet point_fields(const Model& model, const std::vector<Index>& plastic) {
   const auto& p = model.points;
   const Index n = p.size();
   FieldSet f;
@@ -26,6 +44,10 @@ FieldSet point_fields(const Model& model) {
   f.tensors.emplace_back("strain", std::move(strain));
   f.scalars.emplace_back("mean_stress", std::move(mean));
   f.scalars.emplace_back("deviatoric_stress", std::move(q));
+  f.scalars.emplace_back("equivalent_plastic_strain", equivalent_plastic_strain(model));
+  std::vector<Index> flag(n, 0);
+  if (static_cast<Index>(plastic.size()) == n) flag = plastic;
+  f.integers.emplace_back("plastic", std::move(flag));
   f.scalars.emplace_back("volume", p.volume);
   f.scalars.emplace_back("mass", p.mass);
   f.integers.emplace_back("id", p.id);

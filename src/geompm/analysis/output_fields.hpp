@@ -2,16 +2,23 @@
 // the last converged step.
 #pragma once
 
+#include <vector>
+
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/step.hpp"
 #include "geompm/io/field_set.hpp"
 
 namespace geompm {
 
+/// Each point's accumulated equivalent plastic strain: its material's internal variable of that
+/// name (Tresca, Mohr-Coulomb), 0 for a material without one (elastic models).
+std::vector<double> equivalent_plastic_strain(const Model& model);
+
 /// displacement, velocity, acceleration, stress (Cauchy, tension positive), strain (Hencky,
-/// 1/2 ln(F F^T)), mean_stress (tr sigma / 3), deviatoric_stress (q = sqrt(3/2 s:s)), volume,
-/// mass, id, body, material.
-FieldSet point_fields(const Model& model);
+/// 1/2 ln(F F^T)), mean_stress (tr sigma / 3), deviatoric_stress (q = sqrt(3/2 s:s)),
+/// equivalent_plastic_strain, plastic (1 where the point flowed plastically in the step written,
+/// as the caller found it; 0 elastic), volume, mass, id, body, material.
+FieldSet point_fields(const Model& model, const std::vector<Index>& plastic);
 
 /// Node fields (velocity, displacement increment of the step, mass; zero at inactive nodes) and
 /// cell fields (active flag, fill fraction).

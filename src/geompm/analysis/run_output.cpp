@@ -75,6 +75,7 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
                      : HistoryWriter(dir / "newton.csv", newton_columns)) {
   for (const auto& structure : model.structures)
     structure_series_.emplace_back(dir / ("structure_" + structure->name() + ".pvd"));
+  step_start_plastic_strain_ = equivalent_plastic_strain(model);
   if (!resume) return;
   points_series_.restore(std::move(resume->points));
   grid_series_.restore(std::move(resume->grid));
@@ -148,6 +149,7 @@ void OutputWriter::last_state(double time, int step_number) {
 void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseContext& phase,
                         double phase_time, double time, int step_number, double dt, bool vtk) {
   append_history(recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt));
+  find_plastic_points();
   if (!vtk) return;
   write_points(time, step_number);
   write_structures(time, step_number);
@@ -189,6 +191,10 @@ std::vector<std::filesystem::path> OutputWriter::plots() {
     request.x_scale = p.x_scale;
     request.y_scale = p.y_scale;
     request.title = p.title.empty() ? model_.spec.title : p.title;
+    request.x_label = p.x_label;
+    request.y_label = p.y_label;
+    for (const spec::PlotReference& r : p.references)
+      request.references.push_back({r.lo, r.hi, r.label});
     plot_history(request, dir_ / p.file);
     written.push_back(dir_ / p.file);
   }
@@ -217,9 +223,20 @@ std::string OutputWriter::points_file(int step_number) {
   return fmt::format("vtk/points_{:06d}.vtu", step_number);
 }
 
+// A point flowed plastically in the step if its equivalent plastic strain grew. A step that lost
+// points (numerics.lost_points: remove) flags none.
+void OutputWriter::find_plastic_points() {
+  std::vector<double> now = equivalent_plastic_strain(model_);
+  plastic_.assign(now.size(), 0);
+  if (now.size() == step_start_plastic_strain_.size())
+    for (std::size_t i = 0; i < now.size(); ++i)
+      plastic_[i] = now[i] > step_start_plastic_strain_[i] ? 1 : 0;
+  step_start_plastic_strain_ = std::move(now);
+}
+
 void OutputWriter::write_points(double time, int step_number) {
   const std::string name = points_file(step_number);
-  write_vtu_points(dir_ / name, model_.points.position, point_fields(model_));
+  write_vtu_points(dir_ / name, model_.points.position, point_fields(model_, plastic_));
   points_series_.add(time, name);
 }
 

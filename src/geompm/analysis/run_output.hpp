@@ -64,6 +64,7 @@ class OutputWriter {
   OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
   static std::string points_file(int step_number);  // relative to the output directory
   void append_history(const std::vector<double>& values);
+  void find_plastic_points();
   void write_points(double time, int step_number);
   void write_structures(double time, int step_number);
   void write_boundary(const StepResult& step, double time, int step_number);
@@ -78,6 +79,10 @@ class OutputWriter {
   HistoryWriter history_;
   HistoryWriter newton_;
   std::vector<double> last_values_;
+  // The points' equivalent plastic strain at the start of the step, and which points flowed
+  // plastically in the last step (points.vtu's `plastic`).
+  std::vector<double> step_start_plastic_strain_;
+  std::vector<Index> plastic_;
 };
 
 }  // namespace geompm

@@ -6,7 +6,9 @@
 #include <cstdlib>
 
 #include "geompm/analysis/motion_check.hpp"
+#include "geompm/analysis/output_folder.hpp"
 #include "geompm/core/error.hpp"
+#include "geompm/core/interrupt.hpp"
 #include "geompm/io/checkpoint_file.hpp"
 #include "geompm/io/output_directory.hpp"
 
@@ -54,11 +56,15 @@ Simulation::~Simulation() = default;
 
 void Simulation::start() {
   // What an earlier run in the same directory left must not be mistaken for this run's: its
-  // checkpoint (a later --resume would go back to it), its summary, a half-written checkpoint,
-  // the temporaries of files being written when it was killed.
+  // checkpoint (a later --resume would go back to it), its summary, ParaView files, plots and
+  // history, a half-written checkpoint, the temporaries of files being written when it was killed.
   prepare_output_directory(options_.output_dir);
   remove_stale_temporaries(options_.output_dir);
   remove_stale_temporaries(options_.output_dir / "vtk");
+  const auto removed = remove_previous_run(options_.output_dir);
+  if (options_.log && !removed.empty())
+    *options_.log << fmt::format("removed {} files of an earlier run from {}\n", removed.size(),
+                                 options_.output_dir.string());
   const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
   std::filesystem::remove(checkpoint);
   std::filesystem::remove(checkpoint_temporary(checkpoint));
@@ -118,6 +124,7 @@ void Simulation::begin_phase() {
 // when that cannot go on; write and count a converged one.
 void Simulation::run_phase() {
   while (!control_->finished()) {
+    if (interrupt_requested()) stop_on_interrupt();
     const double t = control_->time(), dt = control_->trial_step();
     const StepResult step = stepper_.advance(*phase_, t, dt);
     output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
@@ -248,6 +255,21 @@ void Simulation::check_motions_followed() {
       "§5): prescribe a motion the body can follow, or drive it through a rigid footing, a "
       "grid_motion or a structure. Results up to time {:g} are in {}",
       phase_->spec->name, unfollowed, time_, options_.output_dir.string()));
+}
+
+// Between steps: the run ends as one that stopped, with a checkpoint of the last converged step
+// (when checkpoints are on) from which --resume goes on.
+void Simulation::stop_on_interrupt() {
+  update_clocks();
+  const spec::Checkpoint& schedule = model_.spec.output.checkpoint;
+  const bool checkpoints =
+      options_.checkpoint_every.value_or(schedule.every_steps) > 0 || schedule.every_minutes > 0;
+  if (checkpoints) save(checkpoint_file(options_.output_dir));
+  stop(fmt::format(
+      "interrupted ({}) in phase '{}' after step {}; results up to time {:g} are in "
+      "{}{}",
+      interrupt_signal_name(), phase_->spec->name, step_number_, time_,
+      options_.output_dir.string(), checkpoints ? "; geompm run --resume goes on from there" : ""));
 }
 
 void Simulation::update_clocks() {

@@ -58,6 +58,7 @@ class Simulation {
   void check_motions_followed();
   void accept(const StepResult& step, double dt);
   void checkpoint_if_due(bool phase_done);
+  [[noreturn]] void stop_on_interrupt();
   void update_clocks();
   [[noreturn]] void stop(const std::string& message);
 

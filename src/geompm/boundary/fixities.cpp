@@ -18,7 +18,7 @@ std::pair<Vec3, Vec3> node_bounds(const Mesh& mesh) {
 
 double node_tolerance(const Mesh& mesh) {
   const auto [lo, hi] = node_bounds(mesh);
-  return 1e-9 * (hi - lo).head(mesh.dim()).norm();
+  return 1e-9 * head_norm(hi - lo, mesh.dim());
 }
 
 std::vector<ResolvedFixity> resolve_fixities(const Mesh& mesh,

@@ -4,8 +4,15 @@ namespace geompm {
 
 std::string SourceLocation::describe() const {
   std::string out = file;
-  if (line > 0) out += ":" + std::to_string(line);
-  if (!key_path.empty()) out += (out.empty() ? "" : ": ") + key_path;
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
+  if (line > 0) {
+    out += ':';
+    out += std::to_string(line);
+  }
+  if (!key_path.empty()) {
+    if (!out.empty()) out += ": ";
+    out += key_path;
+  }
   return out;
 }
 

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace geompm {
@@ -16,6 +18,19 @@ using Mat3 = Eigen::Matrix3d;  // stresses, deformation gradients (3x3 also in 2
 enum class Kinematics { PlaneStrain, Axisymmetric, ThreeD };
 
 inline int spatial_dimension(Kinematics k) { return k == Kinematics::ThreeD ? 3 : 2; }
+
+/// The Euclidean norm and the largest of the first `dim` components of `v`, as loops: Eigen's
+/// dynamic-size head() of a fixed-size vector makes GCC 12 warn about array bounds it keeps.
+inline double head_norm(const Vec3& v, int dim) {
+  double sum = 0.0;
+  for (int i = 0; i < dim; ++i) sum += v(i) * v(i);
+  return std::sqrt(sum);
+}
+inline double head_max(const Vec3& v, int dim) {
+  double largest = v(0);
+  for (int i = 1; i < dim; ++i) largest = std::max(largest, v(i));
+  return largest;
+}
 
 const char* to_string(Kinematics k);
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "geompm/core/error.hpp"
+#include "geompm/io/yaml_access.hpp"  // did_you_mean
 
 namespace geompm {
 
@@ -77,7 +78,8 @@ std::size_t CsvTable::column(const std::string& name, const std::string& file) c
     if (columns[i] == name) return i;
   std::string known;
   for (const auto& c : columns) known += (known.empty() ? "" : ", ") + c;
-  throw InputError(file + ": no column '" + name + "'; the columns are: " + known);
+  throw InputError(file + ": no column '" + name + "'" + yaml::did_you_mean(name, columns) +
+                   "; the columns are: " + known);
 }
 
 CsvTable read_csv(const std::filesystem::path& file) {

@@ -120,9 +120,30 @@ double read_scale(const yaml::Node& node) {
   return scale;
 }
 
+// {y: 5.14, label: ...} (a line) or {y: [5.14, 5.40], label: ...} (a band).
+spec::PlotReference read_plot_reference(const yaml::Node& node) {
+  const yaml::Map section = node.map({"y", "label"});
+  spec::PlotReference reference;
+  const yaml::Node y = section.required("y");
+  if (y.is_list()) {
+    const std::vector<yaml::Node> ends = y.items();
+    if (ends.size() != 2) y.fail("a reference band is two numbers, [lower, upper]");
+    reference.lo = ends[0].number();
+    reference.hi = ends[1].number();
+    if (!(reference.lo < reference.hi))
+      y.fail(fmt::format("a reference band's lower value ({}) must be below its upper ({})",
+                         reference.lo, reference.hi));
+  } else {
+    reference.lo = reference.hi = y.number();
+  }
+  reference.label = section.text_or("label", "");
+  return reference;
+}
+
 spec::Plot read_plot(const yaml::Node& node, const std::vector<std::string>& columns,
                      const std::vector<spec::Plot>& earlier) {
-  const yaml::Map section = node.map({"file", "x", "y", "x_scale", "y_scale", "title"});
+  const yaml::Map section = node.map(
+      {"file", "x", "y", "x_scale", "y_scale", "title", "x_label", "y_label", "reference"});
   spec::Plot plot;
   plot.source = node.where();
   const yaml::Node file = section.required("file");
@@ -150,6 +171,15 @@ spec::Plot read_plot(const yaml::Node& node, const std::vector<std::string>& col
   if (auto scale = section.find("x_scale")) plot.x_scale = read_scale(*scale);
   if (auto scale = section.find("y_scale")) plot.y_scale = read_scale(*scale);
   plot.title = section.text_or("title", "");
+  plot.x_label = section.text_or("x_label", "");
+  plot.y_label = section.text_or("y_label", "");
+  if (auto reference = section.find_non_empty("reference")) {
+    if (reference->is_list())
+      for (const yaml::Node& item : reference->items())
+        plot.references.push_back(read_plot_reference(item));
+    else
+      plot.references.push_back(read_plot_reference(*reference));
+  }
   return plot;
 }
 

@@ -1,6 +1,7 @@
 // PNG line plots drawn with libgd. The layout, from the outside in: a title on top; tick labels
 // and axis labels below and left of the frame; the legend right of the frame, where it never
-// hides a curve; inside the frame, a light grid at the ticks and the curves, clipped to it.
+// hides a curve; inside the frame, a light grid at the ticks, the reference bands and lines, and
+// the curves, clipped to it. Text is drawn in ASCII (plot_text.hpp).
 #include "geompm/io/plot.hpp"
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 
 #include "geompm/core/error.hpp"
 #include "geompm/io/history_writer.hpp"
+#include "geompm/io/plot_text.hpp"
 #include "geompm/io/vtk_writer.hpp"  // write_file_atomically
 
 namespace geompm {
@@ -27,6 +29,10 @@ namespace {
 // readers. Beyond ten curves they repeat.
 constexpr unsigned kLineColours[] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
                                      0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+
+// Reference lines in dark grey, dashed; bands filled in a light sand colour under the curves.
+constexpr unsigned kReferenceColour = 0x404040;
+constexpr unsigned kBandColour = 0xf6e3c4;
 
 constexpr int kTickLength = 5;
 constexpr int kInset = 6;  // gap between the frame and the first/last tick, so that a curve on
@@ -46,7 +52,7 @@ int text_width(gdFontPtr font, const std::string& text) {
 
 void draw_text(gdImagePtr image, gdFontPtr font, int x, int y, const std::string& text,
                int colour) {
-  std::string copy = text;  // gdImageString takes a non-const pointer
+  std::string copy = text;  // gdImageString takes a non-const pointer; text is ASCII already
   gdImageString(image, font, x, y, reinterpret_cast<unsigned char*>(copy.data()), colour);
 }
 
@@ -165,12 +171,6 @@ struct Curve {
   std::vector<double> x, y;  // scaled; non-finite entries are gaps
 };
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 /// The curves to draw, and the ranges of their drawable points.
 struct PlotData {
   std::vector<Curve> curves;
@@ -184,7 +184,7 @@ PlotData read_curves(const PlotRequest& request, const std::string& csv_name) {
   PlotData data;
   for (const auto& name : request.y) {
     const std::size_t y_column = table.column(name, csv_name);
-    Curve curve{name, {}, {}};
+    Curve curve{plot_ascii(name), {}, {}};
     for (const auto& row : table.rows) {
       curve.x.push_back(row[x_column] * request.x_scale);
       curve.y.push_back(row[y_column] * request.y_scale);
@@ -195,6 +195,10 @@ PlotData read_curves(const PlotRequest& request, const std::string& csv_name) {
       }
     }
     data.curves.push_back(std::move(curve));
+  }
+  for (const PlotReference& reference : request.references) {
+    data.y_range.include(reference.lo);
+    data.y_range.include(reference.hi);
   }
   return data;
 }
@@ -237,6 +241,8 @@ Layout lay_out(const PlotRequest& request, const PlotData& data, const Fonts& fo
   int legend_width = 0;
   for (const auto& c : data.curves)
     legend_width = std::max(legend_width, text_width(fonts.small, c.name));
+  for (const auto& r : request.references)
+    legend_width = std::max(legend_width, text_width(fonts.small, plot_ascii(r.label)));
   l.right = l.width - std::min(l.width / 3, 16 + l.legend_sample + 6 + legend_width + 10);
   l.x_axis = choose_axis(data.x_range.usable(), l.right - l.left - 2 * kInset, 70, fonts.small,
                          /*labels_side_by_side=*/true);
@@ -260,6 +266,31 @@ void draw_grid_and_ticks(gdImagePtr im, const Layout& l, const Fonts& fonts, int
               l.left - kTickLength - 4 - text_width(fonts.small, l.y_axis.labels[i]),
               py - fonts.small->h / 2, l.y_axis.labels[i], black);
   }
+}
+
+// gdStyled then draws dashes of 8 pixels, 4 apart, in the reference colour.
+void use_dashed_reference_style(gdImagePtr im) {
+  const int line = allocate(im, kReferenceColour);
+  int dash[12];
+  for (int i = 0; i < 12; ++i) dash[i] = i < 8 ? line : gdTransparent;
+  gdImageSetStyle(im, dash, 12);
+}
+
+// Reference bands (filled) and lines (dashed), across the frame, under the curves.
+void draw_references(gdImagePtr im, const Layout& l, const std::vector<PlotReference>& references) {
+  gdImageSetClip(im, l.left + 1, l.top + 1, l.right - 1, l.bottom - 1);
+  const int band = allocate(im, kBandColour);
+  for (const PlotReference& r : references)
+    if (r.hi > r.lo)
+      gdImageFilledRectangle(im, l.left + 1, pixel(l.to_py(r.hi)), l.right - 1,
+                             pixel(l.to_py(r.lo)), band);
+  use_dashed_reference_style(im);
+  for (const PlotReference& r : references)
+    for (const double y : {r.lo, r.hi}) {
+      const int py = pixel(l.to_py(y));
+      gdImageLine(im, l.left + 1, py, l.right - 1, py, gdStyled);
+    }
+  gdImageSetClip(im, 0, 0, l.width - 1, l.height - 1);
 }
 
 // Curves, clipped to the inside of the frame. A point with no drawable neighbour (a single
@@ -289,13 +320,37 @@ void draw_curves(gdImagePtr im, const Layout& l, const std::vector<Curve>& curve
   gdImageSetClip(im, 0, 0, l.width - 1, l.height - 1);
 }
 
+// The references' entries of the legend, below the curves': a dashed line, or a filled box with
+// dashed edges for a band, and the label.
+void draw_reference_legend(gdImagePtr im, const Layout& l, const Fonts& fonts,
+                           const std::vector<PlotReference>& references, std::size_t curves,
+                           int black) {
+  const int band = allocate(im, kBandColour);
+  use_dashed_reference_style(im);
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    const int y = l.top + 8 + static_cast<int>(curves + r) * (fonts.small->h + 6);
+    const int x0 = l.right + 16, x1 = x0 + l.legend_sample, mid = y + fonts.small->h / 2;
+    if (references[r].hi > references[r].lo) {
+      gdImageFilledRectangle(im, x0, y + 1, x1, y + fonts.small->h - 1, band);
+      gdImageLine(im, x0, y + 1, x1, y + 1, gdStyled);
+      gdImageLine(im, x0, y + fonts.small->h - 1, x1, y + fonts.small->h - 1, gdStyled);
+    } else {
+      gdImageLine(im, x0, mid, x1, mid, gdStyled);
+    }
+    draw_text(im, fonts.small, x1 + 6, y, plot_ascii(references[r].label), black);
+  }
+}
+
 // Title, axis labels, legend.
 void draw_labels_and_legend(gdImagePtr im, const Layout& l, const Fonts& fonts,
                             const PlotRequest& request, const std::vector<Curve>& curves,
                             int black) {
-  const std::string title = request.title.empty() ? request.csv.filename().string() : request.title;
-  const std::string x_label = request.x_label.empty() ? request.x : request.x_label;
-  const std::string y_label = request.y_label.empty() ? joined(request.y) : request.y_label;
+  const std::string title =
+      plot_ascii(request.title.empty() ? request.csv.filename().string() : request.title);
+  const std::string x_label = plot_ascii(
+      request.x_label.empty() ? default_axis_label({request.x}, request.x_scale) : request.x_label);
+  const std::string y_label = plot_ascii(
+      request.y_label.empty() ? default_axis_label(request.y, request.y_scale) : request.y_label);
   draw_text(im, fonts.title, std::max(4, (l.left + l.right - text_width(fonts.title, title)) / 2),
             12, title, black);
   draw_text(im, fonts.label, std::max(4, (l.left + l.right - text_width(fonts.label, x_label)) / 2),
@@ -312,6 +367,7 @@ void draw_labels_and_legend(gdImagePtr im, const Layout& l, const Fonts& fonts,
     gdImageSetThickness(im, 2);
   }
   gdImageSetThickness(im, 1);
+  draw_reference_legend(im, l, fonts, request.references, curves.size(), black);
 }
 
 void write_png(gdImagePtr im, const std::filesystem::path& png) {
@@ -351,6 +407,7 @@ void plot_history(const PlotRequest& request, const std::filesystem::path& png) 
   gdImageFilledRectangle(im, 0, 0, width - 1, height - 1, white);
 
   draw_grid_and_ticks(im, layout, fonts, black, grid);
+  draw_references(im, layout, request.references);
   draw_curves(im, layout, data.curves);
   gdImageRectangle(im, layout.left, layout.top, layout.right, layout.bottom, black);
   draw_labels_and_legend(im, layout, fonts, request, data.curves, black);

@@ -9,6 +9,13 @@
 
 namespace geompm {
 
+/// A horizontal reference line (lo == hi) or band (lo < hi) at values of the plotted (scaled) y
+/// axis, e.g. Prandtl's 2 + pi under a load-settlement curve; named in the legend.
+struct PlotReference {
+  double lo = 0, hi = 0;
+  std::string label;
+};
+
 struct PlotRequest {
   std::filesystem::path csv;
   std::string x;
@@ -16,8 +23,9 @@ struct PlotRequest {
   double x_scale = 1.0;
   double y_scale = 1.0;
   std::string title;
-  std::string x_label;  // defaults to the column name
-  std::string y_label;
+  std::string x_label;  // defaults to the column name, with its scale ("-settlement")
+  std::string y_label;  // defaults to the y column names, with their scale
+  std::vector<PlotReference> references;
   int width = 900, height = 600;
 };
 

@@ -142,7 +142,7 @@ std::optional<RectilinearGrid> find_rectilinear_grid(const Mesh& mesh, std::stri
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const double tol = 1e-9 * (hi - lo).head(dim).maxCoeff();
+  const double tol = 1e-9 * head_max(hi - lo, dim);
   if (!find_grid_lines(mesh, tol, grid, why)) return std::nullopt;
   std::vector<std::array<int, 3>> index;  // grid index of every node
   if (!index_nodes(mesh, tol, grid, index, why)) return std::nullopt;

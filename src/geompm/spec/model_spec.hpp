@@ -292,12 +292,20 @@ struct History {
   SourceLocation source;
 };
 
+/// A horizontal line (lo == hi) or band (lo < hi) of a plot, in the plotted (scaled) y units.
+struct PlotReference {
+  double lo = 0, hi = 0;
+  std::string label;
+};
+
 struct Plot {
   std::string file;                     // PNG, relative to the output directory
   std::string x;                        // history column
   std::vector<std::string> y;           // history columns
   double x_scale = 1.0, y_scale = 1.0;  // e.g. -1 to plot settlement downward as positive
   std::string title;
+  std::string x_label, y_label;  // quantity and unit; default: the columns with their scale
+  std::vector<PlotReference> references;
   SourceLocation source;
 };
 

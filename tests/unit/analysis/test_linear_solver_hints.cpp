@@ -45,14 +45,18 @@ void check_hints(int dim, bool mixed) {
       EXPECT_EQ(hints.unknown_node[row], a);
       EXPECT_EQ(hints.unknown_component[row], c);
     }
-    if (mixed)
-      if (const Index row = dofs.free_index(dofs.dof(p, a)); row >= 0)
+    if (mixed) {
+      if (const Index row = dofs.free_index(dofs.dof(p, a)); row >= 0) {
         EXPECT_EQ(hints.unknown_node[row], -1);
+      }
+    }
   }
   // The fields partition the rows, ascending each.
   ASSERT_EQ(hints.fields.size(), mixed ? 2u : 1u);
   EXPECT_EQ(hints.fields[0].name, "displacement");
-  if (mixed) EXPECT_EQ(hints.fields[1].name, "pressure");
+  if (mixed) {
+    EXPECT_EQ(hints.fields[1].name, "pressure");
+  }
   std::vector<int> seen(rows, 0);
   for (const auto& field : hints.fields) {
     EXPECT_TRUE(std::is_sorted(field.unknowns.begin(), field.unknowns.end()));

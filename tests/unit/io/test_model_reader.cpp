@@ -197,6 +197,32 @@ TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
   EXPECT_FALSE(m.materials[0].formulation.has_value());
 }
 
+TEST(ModelReader, ReadsPlotLabelsAndReferenceLinesAndBands) {
+  const std::string text = testing::apply(
+      testing::kValidModel,
+      {{"title: Settlement, y_scale: -1}",
+        "title: Settlement, y_scale: -1, x_label: \"settlement (m)\",\n"
+        "       y_label: load (kN/m), reference: {y: 5.14, label: Prandtl}}\n"
+        "    - {file: band.png, y: top_uy, reference: [{y: [1, 2]}, {y: 3, label: three}]}"}});
+  const spec::Model m = read_model_from_string(text, "column.yaml");
+  ASSERT_EQ(m.output.plots.size(), 2u);
+  const spec::Plot& plot = m.output.plots[0];
+  EXPECT_EQ(plot.x_label, "settlement (m)");
+  EXPECT_EQ(plot.y_label, "load (kN/m)");
+  ASSERT_EQ(plot.references.size(), 1u);
+  EXPECT_DOUBLE_EQ(plot.references[0].lo, 5.14);
+  EXPECT_DOUBLE_EQ(plot.references[0].hi, 5.14);
+  EXPECT_EQ(plot.references[0].label, "Prandtl");
+  const spec::Plot& band = m.output.plots[1];
+  EXPECT_EQ(band.x_label, "");  // drawn as the column name with its scale
+  ASSERT_EQ(band.references.size(), 2u);
+  EXPECT_DOUBLE_EQ(band.references[0].lo, 1.0);
+  EXPECT_DOUBLE_EQ(band.references[0].hi, 2.0);
+  EXPECT_EQ(band.references[0].label, "");
+  EXPECT_DOUBLE_EQ(band.references[1].lo, 3.0);
+  EXPECT_EQ(band.references[1].label, "three");
+}
+
 TEST(ModelReader, ReadsTheMixedFormulationGloballyAndPerMaterial) {
   const std::string text = testing::apply(
       testing::kValidModel,

@@ -13,6 +13,7 @@
 
 #include "geompm/core/error.hpp"
 #include "geompm/io/plot.hpp"
+#include "geompm/io/plot_text.hpp"
 
 namespace geompm {
 namespace {
@@ -309,6 +310,69 @@ TEST_F(PlotTest, AMissingColumnIsAnInputErrorListingTheColumns) {
   }
   EXPECT_THROW(plot_history(request_for(csv, "t", {"force"}), dir_ / "p.png"), InputError);
   EXPECT_FALSE(fs::exists(dir_ / "p.png"));
+}
+
+TEST_F(PlotTest, AMisspeltColumnSuggestsTheNearestOne) {
+  const fs::path csv = write_csv("time,settlement,force\n0,1,2\n");
+  try {
+    plot_history(request_for(csv, "settlemnt", {"force"}), dir_ / "p.png");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'settlement'?"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The reference colours of plot.cpp: dashed lines 0x404040, bands filled 0xf6e3c4.
+constexpr unsigned kReferenceLine = 0x404040, kReferenceBand = 0xf6e3c4;
+
+TEST_F(PlotTest, AReferenceLineIsDashedAcrossTheFrameAtItsValueAndWidensTheRange) {
+  // The curve rises from 0 to 4; the reference at 5.14 lies above it, so the range grows to
+  // show it.
+  const fs::path csv = write_csv("u,q\n0,0\n1,2\n2,3\n3,4\n");
+  PlotRequest request = request_for(csv, "u", {"q"});
+  request.references = {{5.14, 5.14, "Prandtl"}};
+  plot_history(request, dir_ / "p.png");
+  const Image image = load_png(dir_ / "p.png");
+  const Frame f = find_frame(image.get());
+  const ColourPixels line = pixels_of(image.get(), kReferenceLine, f);
+  const ColourPixels curve = pixels_of(image.get(), plot_line_colour(0), f);
+  ASSERT_GT(line.inside.size(), 0u);
+  // One row, above every pixel of the curve, dashed over most of the frame's width.
+  EXPECT_EQ(line.min_y(), line.max_y());
+  EXPECT_LT(line.min_y(), curve.min_y());
+  EXPECT_GT(line.inside.size(), static_cast<std::size_t>((f.right - f.left) / 2));
+  EXPECT_LT(line.inside.size(), static_cast<std::size_t>(f.right - f.left));
+  EXPECT_GT(line.outside.size(), 0u) << "no legend sample";
+}
+
+TEST_F(PlotTest, AReferenceBandIsFilledBetweenItsValues) {
+  const fs::path csv = write_csv("u,q\n0,0\n1,10\n");
+  PlotRequest request = request_for(csv, "u", {"q"});
+  request.references = {{4.0, 6.0, "band"}};
+  plot_history(request, dir_ / "p.png");
+  const Image image = load_png(dir_ / "p.png");
+  const Frame f = find_frame(image.get());
+  const ColourPixels band = pixels_of(image.get(), kReferenceBand, f);
+  ASSERT_GT(band.inside.size(), 0u);
+  // A fifth of the height of the 0..10 axis, give or take the insets and the curve over it.
+  const double share = static_cast<double>(band.max_y() - band.min_y()) / (f.bottom - f.top);
+  EXPECT_NEAR(share, 0.2, 0.03);
+}
+
+TEST(PlotText, DefaultLabelsShowTheScale) {
+  EXPECT_EQ(default_axis_label({"settlement"}, 1.0), "settlement");
+  EXPECT_EQ(default_axis_label({"settlement"}, -1.0), "-settlement");
+  EXPECT_EQ(default_axis_label({"force"}, 2.0), "2 * force");
+  EXPECT_EQ(default_axis_label({"a", "b"}, 0.5), "0.5 * a, 0.5 * b");
+}
+
+TEST(PlotText, NonAsciiTextIsSpeltInAscii) {
+  EXPECT_EQ(plot_ascii("q/s_u against 2 + π"), "q/s_u against 2 + pi");
+  EXPECT_EQ(plot_ascii("N_γ, φ = 30°"), "N_gamma, phi = 30 deg");
+  EXPECT_EQ(plot_ascii("σ − σ₀ × 10"), "sigma - sigma? x 10");
+  EXPECT_EQ(plot_ascii("plain"), "plain");
+  EXPECT_EQ(plot_ascii(std::string("bad \xff byte")), "bad ? byte");
 }
 
 TEST_F(PlotTest, AMissingCsvIsAnInputErrorNamingTheFile) {
