@@ -369,7 +369,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
   for (const spec::Structure& structure : spec.structures) {
-    model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
+    model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
   }
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
