@@ -232,3 +232,39 @@ TEST(DeformableStructure, InterpolatesItsPointsAndRestoresItsState) {
 
 }  // namespace
 }  // namespace geompm
+
+namespace geompm {
+namespace {
+
+TEST(DeformableStructureTerm, FallsFreelyAsNewmarkIntegratesAConstantAcceleration) {
+  // Nothing holds it: with the consistent mass, M (g, g, ...) is exactly its weight (eq. 17.13,
+  // 17.14), so every node falls as the trapezoidal rule integrates g, unstrained.
+  const auto material = make_material("linear_elastic");
+  DeformableStructure s("block", distorted_mesh(CellType::Quad4, Kinematics::PlaneStrain, 9),
+                        *material, 2.0);
+  const Vec3 g(0, -9.81, 0);
+  const double dt = 0.1;
+  Vector a0 = Vector::Zero(2 * s.num_nodes());
+  for (Index a = 0; a < s.num_nodes(); ++a) a0(2 * a + 1) = g.y();
+  s.set_rates(Vector::Zero(a0.size()), a0);  // released at rest with its acceleration g
+  for (int step = 1; step <= 4; ++step) {
+    DofMap dofs;
+    s.add_unknowns(dofs);
+    dofs.number_free();
+    DeformableStructureTerm term(s, dofs, g, Vector(), Newmark{0.25, 0.5, dt}, dt);
+    Vector du;
+    testing::solve_structure_step(dofs, term, du);
+    Reactions unused;
+    term.report(du, unused);
+    term.commit();
+    const double t = step * dt;
+    for (Index a = 0; a < s.num_nodes(); ++a) {
+      EXPECT_NEAR(s.displacement(a).y(), 0.5 * g.y() * t * t, 1e-10);
+      EXPECT_NEAR(s.displacement(a).x(), 0.0, 1e-10);
+    }
+    for (const GaussPointState& p : s.gauss_points()) EXPECT_LT(p.stress.norm(), 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace geompm
