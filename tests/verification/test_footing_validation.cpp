@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "example_text.hpp"
+#include "footing_run.hpp"
 #include "read_vtu.hpp"
 #include "richardson.hpp"
 #include "run_model.hpp"
@@ -56,6 +57,11 @@
 
 namespace geompm {
 namespace {
+
+using testing::Footing;
+using testing::incremental_pressure;
+using testing::no_vtk;
+using testing::run_footing;
 
 constexpr double kPrandtl =
     2.0 + std::numbers::pi;  // q_u / s_u of a rigid strip on Tresca soil (Prandtl 1921)
@@ -84,58 +90,6 @@ std::string default_numerics(std::string text) {
     remove("\nnumerics: {", key);
   remove("newton: {", "energy_line_search");
   return text;
-}
-
-// The examples' mesh (10 cells under the footing's half-width, h = B/20), without VTK files.
-std::string no_vtk(const std::string& text) {
-  return testing::replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}");
-}
-
-struct Footing {
-  std::vector<double> settlement, q, iterations;
-  RunSummary summary;
-  std::filesystem::path output;  // the run's directory (its VTK files, if the model writes any)
-  // q at a settlement (linear between steps)
-  double q_at(double s) const {
-    for (std::size_t k = 1; k < settlement.size(); ++k)
-      if (settlement[k] >= s - 1e-5) {
-        const double a = (s - settlement[k - 1]) / (settlement[k] - settlement[k - 1]);
-        return q[k - 1] + a * (q[k] - q[k - 1]);
-      }
-    ADD_FAILURE() << "the run did not reach a settlement of " << s;
-    return NAN;
-  }
-  // mean of q over the settlements s0..s1 (smooths the cell-crossing noise)
-  double q_mean(double s0, double s1) const {
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = 0; k < settlement.size(); ++k)
-      if (settlement[k] >= s0 - 1e-5 && settlement[k] <= s1 + 1e-5) {
-        sum += q[k];
-        ++count;
-      }
-    return count > 0 ? sum / count : NAN;
-  }
-  int max_iterations() const {
-    return static_cast<int>(*std::max_element(iterations.begin(), iterations.end()));
-  }
-};
-
-// Runs a footing model (once per text: several tests share runs); q = scale x force column.
-const Footing& run_footing(const std::string& text, const std::string& name, double scale) {
-  static std::map<std::string, Footing> cache;
-  if (auto it = cache.find(text); it != cache.end()) return it->second;
-  const auto run = testing::run_spec(read_model_from_string(text, name + ".yaml"), name);
-  Footing f;
-  f.summary = run.summary;
-  f.output = run.output;
-  for (double s : run.column("settlement")) f.settlement.push_back(-s);  // B = 1
-  for (double force : run.column("force")) f.q.push_back(scale * force);
-  f.iterations = run.column("newton_iterations");
-  std::printf("[%s] %d steps, Newton max %d, total %d; q at the end %.3f\n", name.c_str(),
-              f.summary.steps, f.summary.max_iterations_in_a_step, f.summary.iterations,
-              f.q.back());
-  return cache.emplace(text, std::move(f)).first->second;
 }
 
 const std::string kClay = "nu: 0.49, density: 0, formulation: mixed";
@@ -366,30 +320,6 @@ TEST(CircularFootingValidation, RigidPlasticLimitConvergesToCoxEasonHopkinsSmoot
   // 5.95, 6.34, within +5 %).
   check_rigid_plastic_limit("circular_footing/circular_footing_smooth.yaml",
                             "circular_footing/circular_footing_rigid_rough.yaml", -8.0, 5.69, 6.05);
-}
-
-// The model with the pressure equation over the step (docs/theory.md eqs. 11.8-11.9).
-std::string incremental_pressure(const std::string& text) {
-  return testing::replace_once(text, "numerics: {",
-                               "numerics: {mixed_pressure_equation: incremental, ");
-}
-
-TEST(CircularFootingValidation, IncrementalPressureEquationReachesCoxEasonHopkinsOnDOver40) {
-  // The rough rigid circular footing on h = D/40 pushed to 0.1 D with the incremental pressure
-  // equation (docs/validation.md §7): Cox, Eason & Hopkins (1961) N_c = 6.05, target within +5 %
-  // as for the strip (REFERENCES §3), with at most 10 Newton iterations a step. Measured 6.08 at
-  // 0.1 D and 6.08 over 0.08-0.1 D. (The default total equation stops at 0.042 D here with 10
-  // iterations; with 20 it gives 5.68, -6 %.)
-  constexpr double kRoughCircle = 6.05;
-  const auto& f = run_footing(
-      incremental_pressure(testing::strip_mesh(
-          no_vtk(testing::example_text("circular_footing/circular_footing_rigid_rough.yaml")), 20)),
-      "circular_rigid_rough_d40_incremental", -8.0);
-  for (const double q : {f.q_at(0.1), f.q_mean(0.08, 0.1)}) {
-    EXPECT_GE(q, kRoughCircle);
-    EXPECT_LE(q, 1.05 * kRoughCircle);
-  }
-  EXPECT_LE(f.max_iterations(), 10);
 }
 
 // The model whose steps start from the last nodal pressure, fitted (docs/theory.md eq. 11.11).

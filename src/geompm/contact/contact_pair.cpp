@@ -45,6 +45,7 @@ void ContactPair::save(ByteWriter& out) const {
   out.put(piece_measure);
   out.put(force);
   out.put(moment);
+  out.put(penetration);
 }
 
 void ContactPair::load(ByteReader& in) {
@@ -60,6 +61,7 @@ void ContactPair::load(ByteReader& in) {
   in.get(piece_measure);
   in.get(force);
   in.get(moment);
+  in.get(penetration);
 }
 
 }  // namespace geompm

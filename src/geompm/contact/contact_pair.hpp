@@ -34,6 +34,11 @@ struct ContactPair {
   std::vector<double> pressure, shear;
   std::vector<ContactState> state;
   std::vector<char> in_grid;
+  /// Per piece in the grid at the last converged step: its group's penetration (eq. 18.2; 0
+  /// when closed, the gap's negative when open), where the next step's starts. The level set
+  /// places the soil's surface only to within a cell: a piece it has not yet seen is all it is
+  /// asked for.
+  std::vector<double> penetration;
   /// Per piece: the structure's surface facet it is part of, and its length or area.
   std::vector<Index> piece_facet;
   std::vector<double> piece_measure;

@@ -1,9 +1,8 @@
-// A structure's surface as contact sees it (docs/theory.md §18.2): its boundary facets cut into
-// segments no longer than the background cell around them, each carrying one normal (and, unless
-// smooth, one tangential) multiplier, constant over the segment, with a Gauss rule on it. One
-// multiplier per cell's width at most: finer multipliers than the grid can resolve would make
-// their equations linearly dependent (the soil's displacement along a line through a cell has
-// only two degrees of freedom per direction), and the system singular.
+// A structure's surface as contact sees it (docs/theory.md §18.1): its boundary facets cut into
+// pieces no longer than the background cell around them, each with a Gauss rule on it. The
+// contact groups the pieces into segments of about two cells, each with one set of multipliers
+// (level_set_contact.hpp): finer multipliers than the grid can resolve would make their equations
+// linearly dependent, and one per cell lets them oscillate.
 #pragma once
 
 #include <vector>

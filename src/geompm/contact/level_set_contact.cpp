@@ -27,6 +27,43 @@ double cell_size(const Mesh& mesh, Index cell) {
   return std::pow(cell_measure(mesh, cell, false), 1.0 / mesh.dim());
 }
 
+// Pieces of the surface that share one set of multipliers.
+struct PieceGroup {
+  std::vector<Index> pieces;
+  Index cell = -1;  // the background cell of its first pieces
+  int cells = 1;    // how many cells' groups it holds
+  Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+  double measure = 0.0, h = 0.0;
+};
+
+// Merges each group of fewer than `min_cells` cells with its nearest neighbours facing the same
+// way (centres at most three cells apart), in the surface's order: deterministic from step to
+// step while the surface and the grid do not change.
+void merge_small_groups(std::vector<PieceGroup>& groups, int min_cells) {
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    PieceGroup& into = groups[g];
+    while (!into.pieces.empty() && into.cells < min_cells) {
+      std::size_t best = groups.size();
+      double nearest = 3.0 * into.h;
+      for (std::size_t j = 0; j < groups.size(); ++j) {
+        const PieceGroup& other = groups[j];
+        if (j == g || other.pieces.empty() || other.normal.dot(into.normal) < 0.7071) continue;
+        const double d = (other.centre - into.centre).norm();
+        if (d < nearest) nearest = d, best = j;
+      }
+      if (best == groups.size()) break;
+      PieceGroup& other = groups[best];
+      into.pieces.insert(into.pieces.end(), other.pieces.begin(), other.pieces.end());
+      into.centre = (into.measure * into.centre + other.measure * other.centre) /
+                    (into.measure + other.measure);
+      into.measure += other.measure;
+      into.cells += other.cells;
+      into.h = std::max(into.h, other.h);
+      other.pieces.clear();
+    }
+  }
+}
+
 }  // namespace
 
 LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& points,
@@ -52,6 +89,7 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
     pair_.shear.assign(all_.size(), 0.0);
     pair_.state.assign(all_.size(), ContactState::Open);
     pair_.in_grid.assign(all_.size(), 0);
+    pair_.penetration.assign(all_.size(), 0.0);
     pair_.piece_facet.clear();
     pair_.piece_measure.clear();
     for (const ContactSegment& piece : all_) {
@@ -59,6 +97,9 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
       pair_.piece_measure.push_back(piece.measure);
     }
   }
+  fill_.assign(grid.mesh().num_cells(), 0.0);
+  for (std::size_t c = 0; c < grid.active_cells().size(); ++c)
+    fill_[grid.active_cells()[c]] = grid.cell_fill()[c];
   for (const std::vector<Index>& group : group_pieces()) {
     Kinematics k;
     if (build_kinematics(group, k)) segments_.push_back(std::move(k));
@@ -69,11 +110,13 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
 }
 
 std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
-  // One group per background cell and direction (normals within 45 degrees of the group's
-  // first): one multiplier per cell a surface crosses, as the grid resolves no finer (eq. 18.1).
-  std::vector<std::vector<Index>> groups;
-  std::vector<Index> group_cell;
-  std::vector<Vec3> group_normal;
+  // First one group per background cell and direction (normals within 45 degrees of the group's
+  // first), then groups merged with their nearest neighbour facing the same way until each spans
+  // about two cells (eq. 18.1): a multiplier constant over one cell lets the soil's nodal
+  // displacement along the surface zigzag under it, and the multipliers oscillate from cell to
+  // cell, opening and closing at every iteration; over two cells each multiplier holds the whole
+  // trace of at least one grid node (the macro-element condition of inf-sup stability).
+  std::vector<PieceGroup> groups;
   Index hint = -1;
   for (std::size_t s = 0; s < all_.size(); ++s) {
     Vec3 centre = Vec3::Zero();
@@ -89,16 +132,40 @@ std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
     hint = where->cell;
     std::size_t g = 0;
     while (g < groups.size() &&
-           (group_cell[g] != where->cell || group_normal[g].dot(all_[s].normal) < 0.7071))
+           (groups[g].cell != where->cell || groups[g].normal.dot(all_[s].normal) < 0.7071))
       ++g;
-    if (g == groups.size()) {
-      groups.emplace_back();
-      group_cell.push_back(where->cell);
-      group_normal.push_back(all_[s].normal);
-    }
-    groups[g].push_back(static_cast<Index>(s));
+    if (g == groups.size()) groups.push_back({{}, where->cell, 1, all_[s].normal});
+    groups[g].pieces.push_back(static_cast<Index>(s));
+    groups[g].centre += all_[s].measure * centre;
+    groups[g].measure += all_[s].measure;
+    groups[g].h = std::max(groups[g].h, h);
   }
-  return groups;
+  for (PieceGroup& g : groups) g.centre /= g.measure;
+  merge_small_groups(groups, dim_ == 3 ? 4 : 2);
+  std::vector<std::vector<Index>> out;
+  for (PieceGroup& g : groups)
+    if (!g.pieces.empty()) out.push_back(std::move(g.pieces));
+  return out;
+}
+
+std::optional<Location> LevelSetContact::soil_cell(const Vec3& x, const Vec3& normal, double h,
+                                                   Index cell) const {
+  // The soil's displacement at a contact point is read in the first cell along the normal, into
+  // the soil, that its points fill: in a cell the soil has left, the nodes away from it are held
+  // by the empty-cell stiffness alone, and a contact read there would push them, not the soil.
+  // The first cell at least half filled within two cells' length, else the fullest one there.
+  std::optional<Location> fullest;
+  double most = 0.0;
+  for (int k = 0; k <= 16; ++k) {
+    const Vec3 y = x + (0.125 * k * h) * normal;
+    const auto at = locator_.locate(y, cell);
+    if (!at) break;
+    cell = at->cell;
+    const double fill = fill_[at->cell];
+    if (fill >= fill_threshold_) return at;
+    if (fill > most) most = fill, fullest = at;
+  }
+  return fullest;
 }
 
 bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinematics& k) const {
@@ -116,21 +183,26 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
     const ContactSegment& segment = all_[piece];
     for (int c = 0; c < 3; ++c)
       k.start[c] += segment.measure / k.measure * pair_.multipliers[piece][c];
-    const bool touching = pair_.in_grid[piece] && pair_.state[piece] != ContactState::Open;
+    const bool tracked = pair_.in_grid[piece];
     for (const ContactGaussPoint& q : segment.points) {
-      const auto where = locator_.locate(q.x, hint);
+      auto where = locator_.locate(q.x, hint);
       if (!where) return false;
       hint = where->cell;
-      const auto nodes = mesh.cell_nodes(where->cell);
+      const double here = cell_size(mesh, where->cell);
+      const auto soil_side = soil_cell(q.x, segment.normal, here, where->cell);
+      if (!soil_side) return false;
+      const auto nodes = mesh.cell_nodes(soil_side->cell);
       for (Index node : nodes)
         if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
-      const double here = cell_size(mesh, where->cell);
       h = std::max(h, here);
-      // A piece that touched the soil at the end of the last step still touches it: the soil's
-      // surface there is where the contact held it (eq. 18.2), which the level set, smeared over
-      // a cell, would place up to the step's displacement away.
+      // A piece that was in the grid at the end of the last step starts where it was then,
+      // touching or at its gap (eq. 18.2): the level set, smeared over a cell, would place the
+      // soil's surface up to a fraction of a cell away, and a piece at the edge of the contact
+      // would open and close from step to step by that much.
       const double w = q.weight / k.measure;
-      if (!touching) {
+      if (tracked) {
+        k.p0 += w * pair_.penetration[piece];
+      } else {
         const double phi = level_set_.value(where->cell, where->xi);
         const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
         k.p0 += w * phi / std::max(gradient.norm(), 0.5 / here);
@@ -139,7 +211,7 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
         return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
                                      w * segment.tangents[1].dot(c)};
       };
-      cell_shape(mesh, where->xi, N);
+      cell_shape(mesh, soil_side->xi, N);
       for (std::size_t a = 0; a < nodes.size(); ++a)
         for (int i = 0; i < dim_; ++i)
           terms.push_back(
@@ -184,6 +256,13 @@ void LevelSetContact::declare_couplings(SparsityBuilder& pattern) const {
     }
     block.clear();
   }
+}
+
+double LevelSetContact::penetration(const Vector& du, std::size_t k) const {
+  const Kinematics& s = segments_[k];
+  double p = s.p0;
+  for (std::size_t j = 0; j < s.dofs.size(); ++j) p += s.dp[j] * du(s.dofs[j]);
+  return p;
 }
 
 bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) {
@@ -242,9 +321,11 @@ void LevelSetContact::report(const Vector& du, Reactions& reactions) {
   // The soil pushes the structure out along -n and against its slip along -t (eq. 18.10).
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
   converged_.assign(segments_.size(), {0.0, 0.0, 0.0});
+  converged_penetration_.assign(segments_.size(), 0.0);
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     const Kinematics& s = segments_[k];
     for (int c = 0; c <= tangents_; ++c) converged_[k][c] = multiplier(du, k, c);
+    converged_penetration_[k] = penetration(du, k);
     for (Index piece : s.pieces) {
       const ContactSegment& segment = all_[piece];
       Vec3 traction = -s.scale * converged_[k][0] * segment.normal;
@@ -264,6 +345,7 @@ void LevelSetContact::report(const Vector& du, Reactions& reactions) {
 void LevelSetContact::commit() {
   // Each piece keeps its group's multipliers, the start of the next step's.
   std::fill(pair_.in_grid.begin(), pair_.in_grid.end(), 0);
+  std::fill(pair_.penetration.begin(), pair_.penetration.end(), 0.0);
   for (auto& m : pair_.multipliers) m = {0.0, 0.0, 0.0};
   std::fill(pair_.pressure.begin(), pair_.pressure.end(), 0.0);
   std::fill(pair_.shear.begin(), pair_.shear.end(), 0.0);
@@ -274,6 +356,7 @@ void LevelSetContact::commit() {
     for (Index piece : s.pieces) {
       pair_.in_grid[piece] = 1;
       pair_.multipliers[piece] = converged_[k];
+      pair_.penetration[piece] = converged_penetration_[k];
       pair_.pressure[piece] = s.scale * converged_[k][0];
       pair_.shear[piece] = tangents_ == 1 && converged_[k][1] < 0.0 ? -shear : shear;
       pair_.state[piece] = state_[k];

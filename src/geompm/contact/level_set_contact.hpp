@@ -9,6 +9,7 @@
 // multipliers lengths changes the iterations, not the result.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "geompm/contact/contact_pair.hpp"
@@ -38,8 +39,8 @@ class LevelSetContact final : public Contribution {
   Index active_segments() const { return static_cast<Index>(segments_.size()); }
 
  private:
-  /// A group of pieces of the surface in one background cell, facing one way, with one set of
-  /// multipliers (eq. 18.1): its mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum
+  /// A group of pieces of the surface over about two background cells, facing one way, with one
+  /// set of multipliers (eq. 18.1): its mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum
   /// ds_tj du_j, over the unknowns j of the structure and of the grid nodes around its Gauss
   /// points (eq. 18.3), and its multipliers at the start of the step.
   struct Kinematics {
@@ -51,11 +52,16 @@ class LevelSetContact final : public Contribution {
     std::vector<double> dp;
     std::vector<std::array<double, 2>> ds;
   };
-  /// The pieces grouped by the background cell their centre lies in and by the way they face;
-  /// pieces outside the step's grid are left out.
+  /// The pieces grouped by the background cell their centre lies in and by the way they face,
+  /// merged to span two cells (four in 3D); pieces outside the step's grid are left out.
   std::vector<std::vector<Index>> group_pieces() const;
   bool build_kinematics(const std::vector<Index>& pieces, Kinematics& k) const;
   double multiplier(const Vector& du, std::size_t k, int component) const;
+  /// Segment k's mean penetration p at the increment du (eq. 18.3).
+  double penetration(const Vector& du, std::size_t k) const;
+  std::optional<Location> soil_cell(const Vec3& x, const Vec3& normal, double h, Index cell) const;
+  std::vector<double> fill_;  // per mesh cell: the fraction its points cover (0 outside the grid)
+  static constexpr double fill_threshold_ = 0.5;  // a cell at least half filled holds its nodes
 
   const GridSystem& grid_;
   const PointLocator& locator_;
@@ -72,6 +78,7 @@ class LevelSetContact final : public Contribution {
   // At the last evaluation, per segment with multipliers: the law's state.
   std::vector<ContactState> state_;
   std::vector<std::array<double, 3>> converged_;  // multipliers at the last report()
+  std::vector<double> converged_penetration_;     // and penetrations
 };
 
 }  // namespace geompm

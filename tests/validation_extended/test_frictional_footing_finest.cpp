@@ -1,5 +1,5 @@
-// The long validation cases (ctest label validation_long, run by CI besides the suite): each
-// takes longer than the suite's other tests together would allow on a 2-core machine.
+// The extended validation tier (ctest label validation_extended; not in CI, whose 2 cores would
+// spend half of the suite's time limit on these two alone; docs/validation.md says how to run it).
 // - N_q on the finest strip mesh of docs/validation.md §9 (h = B/80): within +5 % of
 //   Prandtl-Reissner's 18.40 at a settlement of 0.01 B, with at most 10 Newton iterations a step
 //   (about 17 minutes on one core beside another test).
