@@ -239,15 +239,14 @@ spec::StructureDrive read_nodal_drive(const std::string& name, const yaml::Node&
         "expected a drive of the structure's nodes, e.g. {nodes: top, velocity: [0, -0.1]}; "
         "found " +
         node.describe());
+  const yaml::Map section = node.map(
+      {"nodes", "displacement", "velocity", "force", "rotation", "angular_velocity", "moment"});
   for (const char* key : {"rotation", "angular_velocity", "moment"})
-    if (auto turning = node.map({"nodes", "displacement", "velocity", "force", "rotation",
-                                 "angular_velocity", "moment"})
-                           .find(key))
+    if (auto turning = section.find(key))
       turning->fail(fmt::format(
           "'{}' is deformable: it has no rigid-body rotation to prescribe or load; drive the "
           "displacement, velocity or force of its nodes",
           name));
-  const yaml::Map section = node.map({"nodes", "displacement", "velocity", "force"});
   spec::StructureDrive drive;
   drive.structure = name;
   drive.source = node.where();

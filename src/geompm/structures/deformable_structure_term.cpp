@@ -20,7 +20,6 @@ bool integrate_cell(const DeformableStructure& s, Index c,
                     const Eigen::Matrix<double, E::nodes, E::dim>& X,
                     const Eigen::Matrix<double, E::nodes, E::dim>& du, bool want_tangent,
                     PointKernelResult<E>& cell, GaussPointState* states) {
-  constexpr int n = E::nodes * E::dim;
   const bool axisymmetric = s.kinematics() == Kinematics::Axisymmetric;
   cell.internal_force.setZero();
   if (want_tangent) cell.stiffness.setZero();
@@ -41,7 +40,6 @@ bool integrate_cell(const DeformableStructure& s, Index c,
       states[q] = {r.state.deformation_gradient, r.state.elastic_left_cauchy_green,
                    r.state.internal, r.state.cauchy_stress};
   }
-  static_cast<void>(n);
   return true;
 }
 
