@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "example_text.hpp"
+#include "geompm/core/error.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
@@ -75,6 +77,46 @@ TEST(Contact, APlateSlidingUnderFrictionCarriesMuTimesItsNormalForce) {
     }
   }
   EXPECT_GE(sliding, 5);
+}
+
+// The friction example with adhesion alpha s_u on Tresca soil (s_u = 100 kPa, strong enough to
+// stay elastic under the plate) instead of Coulomb friction.
+std::string adhesion_model(const std::string& soil) {
+  auto text = testing::example_text("structures/contact_friction.yaml");
+  text = testing::replace_once(text, "soil: {model: linear_elastic, E: 10000, nu: 0.3, density: 0}",
+                               soil);
+  return testing::replace_once(text, "contact: {tangential: friction, friction: 0.3}",
+                               "contact: {tangential: adhesion, alpha: 0.2}");
+}
+
+TEST(Contact, AdhesionIsAlphaTimesTheSoilsUndrainedStrength) {
+  // A plate 0.5 m long dragged over the block slides at a shear force of alpha s_u B
+  // = 0.2 x 100 x 0.5 = 10 kN/m (docs/theory.md eq. 18.6), whatever the normal force.
+  const auto text = adhesion_model("soil: {model: tresca, su: 100, E: 10000, nu: 0.3, density: 0}");
+  const auto run = testing::run_spec(read_model_from_string(text, "adhesion.yaml"), "adhesion");
+  const auto fx = run.column("contact_fx"), ux = run.column("plate_ux");
+  int sliding = 0;
+  for (std::size_t k = 0; k < fx.size(); ++k) {
+    EXPECT_LE(std::abs(fx[k]), 10.0 * (1 + 1e-12));
+    if (ux[k] >= 0.01) {
+      EXPECT_NEAR(fx[k], -10.0, 1e-9);
+      ++sliding;
+    }
+  }
+  EXPECT_GE(sliding, 5);
+}
+
+TEST(Contact, AdhesionAsAFractionOfSuNeedsSoilWithAnUndrainedStrength) {
+  const auto text = adhesion_model(
+      "soil: {model: mohr_coulomb, c: 10, phi: 30, psi: 0, E: 10000, nu: 0.3, density: 0}");
+  try {
+    build_model(read_model_from_string(text, "adhesion.yaml"));
+    FAIL() << "alpha on Mohr-Coulomb soil was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("alpha needs soil with an undrained strength"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Contact, ResultsDoNotDependOnTheMultipliersScale) {

@@ -330,6 +330,29 @@ void check_boundaries(const spec::Model& spec, const Mesh& mesh) {
 }  // namespace
 
 namespace {
+// Adhesion as a fraction alpha of s_u needs soil that has one: every material the touched bodies'
+// points carry must keep an undrained strength per point (Tresca's internal variable "su").
+void check_adhesion_strength(const Model& model, const ContactPair& pair,
+                             const spec::Contact& contact) {
+  if (!(pair.law.alpha > 0.0)) return;
+  std::vector<char> checked(model.materials.size(), 0);
+  for (Index p = 0; p < model.points.size(); ++p) {
+    const Index body = model.points.body[p], m = model.points.material[p];
+    if ((!pair.bodies.empty() && !pair.bodies[body]) || checked[m]) continue;
+    checked[m] = 1;
+    const Material& material = *model.materials[m];
+    bool has_su = false;
+    for (int k = 0; k < material.internal_variable_count(); ++k)
+      has_su |= std::string(material.internal_variable_name(k)) == "su";
+    if (!has_su)
+      throw InputError(contact.source,
+                       fmt::format("contact of '{}': alpha needs soil with an undrained strength "
+                                   "s_u (model tresca), but material '{}' is {}; give the "
+                                   "adhesion as a stress instead (adhesion: ...)",
+                                   pair.name, model.spec.materials[m].name, material.model_name()));
+  }
+}
+
 // A structure's contact with the soil (docs/theory.md §18) as the model file gives it.
 ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structure, Index index) {
   ContactPair pair;
@@ -349,6 +372,7 @@ ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structu
                                                          {"friction", TangentialContact::Friction}};
   pair.law.tangential = laws.at(c.tangential);
   pair.law.adhesion = c.adhesion;
+  pair.law.alpha = c.alpha;
   pair.law.friction = c.friction;
   if (c.cap) pair.law.cap = *c.cap;
   return pair;
@@ -371,6 +395,7 @@ std::unique_ptr<Model> build_model(const spec::Model& spec) {
   for (const spec::Structure& structure : spec.structures) {
     model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
+    check_adhesion_strength(*model, model->contacts.back(), structure.contact);
   }
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
   // (docs/theory.md §10), before any step.

@@ -20,7 +20,8 @@ enum class TangentialContact { Smooth, Rough, Adhesion, Friction };
 /// What the contact allows along its surface.
 struct ContactLaw {
   TangentialContact tangential = TangentialContact::Smooth;
-  double adhesion = 0.0;  // Adhesion: the largest shear stress, a pressure
+  double adhesion = 0.0;  // Adhesion: the largest shear stress, a pressure, or ...
+  double alpha = 0.0;     // ... this fraction of the soil's s_u where it touches (per segment)
   double friction = 0.0;  // Friction: Coulomb's mu
   double cap = std::numeric_limits<double>::infinity();  // Friction: the largest shear stress
 };

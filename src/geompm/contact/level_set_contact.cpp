@@ -70,6 +70,7 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
                                  const PointLocator& locator, const Structure& structure,
                                  ContactPair& pair, double modulus, DofMap& dofs)
     : grid_(grid),
+      points_(points),
       locator_(locator),
       structure_(structure),
       level_set_(grid, points, pair.bodies),
@@ -98,8 +99,17 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
     }
   }
   fill_.assign(grid.mesh().num_cells(), 0.0);
-  for (std::size_t c = 0; c < grid.active_cells().size(); ++c)
+  active_of_cell_.assign(grid.mesh().num_cells(), -1);
+  for (std::size_t c = 0; c < grid.active_cells().size(); ++c) {
     fill_[grid.active_cells()[c]] = grid.cell_fill()[c];
+    active_of_cell_[grid.active_cells()[c]] = static_cast<Index>(c);
+  }
+  for (const Material* material : grid.materials()) {
+    int su = -1;
+    for (int k = 0; material && k < material->internal_variable_count(); ++k)
+      if (std::string(material->internal_variable_name(k)) == "su") su = k;
+    su_index_.push_back(su);
+  }
   for (const std::vector<Index>& group : group_pieces()) {
     Kinematics k;
     if (build_kinematics(group, k)) segments_.push_back(std::move(k));
@@ -146,6 +156,19 @@ std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
   for (PieceGroup& g : groups)
     if (!g.pieces.empty()) out.push_back(std::move(g.pieces));
   return out;
+}
+
+double LevelSetContact::cell_strength(Index cell) const {
+  const Index ci = active_of_cell_[cell];
+  if (ci < 0) return 0.0;
+  double sum = 0.0, volume = 0.0;
+  for (Index p = grid_.cell_point_begin(ci); p < grid_.cell_point_end(ci); ++p) {
+    const int su = su_index_[points_.material[p]];
+    if (su < 0 || (!pair_.bodies.empty() && !pair_.bodies[points_.body[p]])) continue;
+    sum += points_.volume[p] * points_.internal[p][su];
+    volume += points_.volume[p];
+  }
+  return volume > 0.0 ? sum / volume : 0.0;
 }
 
 std::optional<Location> LevelSetContact::soil_cell(const Vec3& x, const Vec3& normal, double h,
@@ -212,6 +235,7 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
                                      w * segment.tangents[1].dot(c)};
       };
       cell_shape(mesh, soil_side->xi, N);
+      if (pair_.law.alpha > 0.0) k.strength += w * cell_strength(soil_side->cell);
       for (std::size_t a = 0; a < nodes.size(); ++a)
         for (int i = 0; i < dim_; ++i)
           terms.push_back(
@@ -282,9 +306,11 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
     // tangent on its own).
     ContactEquations e[2];
     double l_t[2] = {0.0, 0.0};
+    ContactLaw law = pair_.law;
+    if (law.alpha > 0.0) law.adhesion = law.alpha * s.strength;  // alpha s_u (eq. 18.6)
     for (int t = 0; t < std::max(tangents_, 1); ++t) {
       if (t < tangents_) l_t[t] = multiplier(du, k, 1 + t);
-      e[t] = contact_equations(pair_.law, s.scale, p, slip[t], l_n, l_t[t], kClosed * s.cell);
+      e[t] = contact_equations(law, s.scale, p, slip[t], l_n, l_t[t], kClosed * s.cell);
     }
     state_[k] = e[0].state;
     forces.internal(n_dof) += cA * e[0].normal;

@@ -40,13 +40,14 @@ class LevelSetContact final : public Contribution {
 
  private:
   /// A group of pieces of the surface over about two background cells, facing one way, with one
-  /// set of multipliers (eq. 18.1): its mean penetration and slip, p = p0 + sum dp_j du_j and s_t = sum
-  /// ds_tj du_j, over the unknowns j of the structure and of the grid nodes around its Gauss
+  /// set of multipliers (eq. 18.1): its mean penetration and slip, p = p0 + sum dp_j du_j and s_t =
+  /// sum ds_tj du_j, over the unknowns j of the structure and of the grid nodes around its Gauss
   /// points (eq. 18.3), and its multipliers at the start of the step.
   struct Kinematics {
     std::vector<Index> pieces;                      // in contact_segments' numbering
     double measure = 0.0, scale = 0.0, cell = 0.0;  // A, c, h
     double p0 = 0.0;
+    double strength = 0.0;  // with adhesion alpha: the soil's mean s_u where it is read
     std::array<double, 3> start = {0.0, 0.0, 0.0};
     std::vector<Index> dofs;
     std::vector<double> dp;
@@ -60,10 +61,15 @@ class LevelSetContact final : public Contribution {
   /// Segment k's mean penetration p at the increment du (eq. 18.3).
   double penetration(const Vector& du, std::size_t k) const;
   std::optional<Location> soil_cell(const Vec3& x, const Vec3& normal, double h, Index cell) const;
+  /// The mean s_u of the touched bodies' points in a cell (0 if none carries one).
+  double cell_strength(Index cell) const;
   std::vector<double> fill_;  // per mesh cell: the fraction its points cover (0 outside the grid)
+  std::vector<Index> active_of_cell_;  // per mesh cell: its index among the active cells, or -1
+  std::vector<int> su_index_;          // per material: its internal variable "su", or -1
   static constexpr double fill_threshold_ = 0.5;  // a cell at least half filled holds its nodes
 
   const GridSystem& grid_;
+  const MaterialPoints& points_;
   const PointLocator& locator_;
   const Structure& structure_;
   const LevelSet level_set_;

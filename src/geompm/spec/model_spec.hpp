@@ -170,7 +170,8 @@ struct StructureShape {
 struct Contact {
   bool enabled = true;                // `contact: none`: the structure touches nothing
   std::string tangential = "smooth";  // smooth | rough | adhesion | friction
-  double adhesion = 0.0;              // adhesion: the largest shear stress
+  double adhesion = 0.0;              // adhesion: the largest shear stress, or ...
+  double alpha = 0.0;                 // ... alpha times the soil's s_u at the contact
   double friction = 0.0;              // friction: Coulomb's mu ...
   std::optional<double> cap;          // ... and, optionally, the largest shear stress
   std::vector<std::string> bodies;    // empty: every body

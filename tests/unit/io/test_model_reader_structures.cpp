@@ -182,6 +182,16 @@ const std::vector<Bad> kBad = {
      "phases[1].structures.pipe", "displacement with rotation"},
     {"drive_too_short", kOne + "    mass: 1\n", "    structures:\n      pipe: {velocity: [1]}\n",
      "pipe: {vel", "phases[1].structures.pipe.velocity", "expected a list of 2 components"},
+    {"alpha_above_one", kOne + "    mass: 1\n    contact: {tangential: adhesion, alpha: 1.5}\n",
+     kPipeDrive, "contact: {", "structures[0].contact.alpha", "expected 0 < alpha <= 1"},
+    {"adhesion_and_alpha",
+     kOne + "    mass: 1\n    contact: {tangential: adhesion, adhesion: 5, alpha: 0.5}\n",
+     kPipeDrive, "contact: {", "structures[0].contact.alpha", "either 'adhesion'"},
+    {"adhesion_of_nothing", kOne + "    mass: 1\n    contact: {tangential: adhesion}\n", kPipeDrive,
+     "contact: {", "structures[0].contact", "needs 'adhesion' (a stress) or 'alpha'"},
+    {"alpha_with_friction",
+     kOne + "    mass: 1\n    contact: {tangential: friction, friction: 0.3, alpha: 0.5}\n",
+     kPipeDrive, "contact: {", "structures[0].contact.alpha", "belongs to tangential: adhesion"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, ModelReaderStructuresMalformed, ::testing::ValuesIn(kBad),
