@@ -316,6 +316,48 @@ TEST_F(Checkpoints, AStructureResumesWithItsPoseAndMotion) {
   EXPECT_GT(history.column("rotation_plate_z").back(), 0.1);
 }
 
+// A deformable structure carries its nodes, its Gauss points' states (F, b_e, the material's
+// variables, the stress) and its nodes' velocities and accelerations from step to step
+// (docs/theory.md §17.7): a plate held at its base and shaken at its top beside the vibrating bar
+// under Newmark, killed in its third checkpoint, resumes from step 20 and ends as a run that never
+// stopped (its section stress too).
+TEST_F(Checkpoints, ADeformableStructureResumesWithItsGaussPointsAndRates) {
+  std::string model = example_text("vibrating_bar/vibrating_bar.yaml");
+  model = replace_once(model, "phases:\n",
+                       "structures:\n"
+                       "  - name: plate\n"
+                       "    shape: {type: footing, width: 1, height: 0.5, position: [5, 3], "
+                       "cell: quad4, cell_size: 0.25}\n"
+                       "    deformable: {material: bar}\n"
+                       "    contact: none\n"
+                       "phases:\n");
+  model = replace_once(model, "      - {boundary: top, fix: [y]}\n",
+                       "      - {boundary: top, fix: [y]}\n"
+                       "    structures:\n"
+                       "      plate: [{nodes: bottom, displacement: [0, 0]},\n"
+                       "              {nodes: top, force: [\"0.5*sin(t)\", -0.2]}]\n");
+  model = replace_once(model, "    - {quantity: kinetic_energy}\n",
+                       "    - {quantity: kinetic_energy}\n"
+                       "    - {quantity: displacement, structure: plate, nodes: top, component: x,"
+                       " name: plate_top_x}\n"
+                       "    - {quantity: section_stress, structure: plate, section: {point: [5, "
+                       "3.1], normal: [0, 1]}, name: plate_stress}\n");
+  run_reference(model);
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(3, {"--checkpoint-every", "10"});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  EXPECT_TRUE(Contains(resume_and_compare(), "phase 'vibration', step 20,"));
+  EXPECT_EQ(read_text(work() / "killed" / "structure_plate.pvd"),
+            read_text(work() / "reference" / "structure_plate.pvd"));
+  // It moved and is stressed.
+  const Csv history = read_csv(work() / "reference" / "history.csv");
+  ASSERT_TRUE(history.problem.empty()) << history.problem;
+  double largest = 0.0;
+  for (double x : history.column("plate_top_x")) largest = std::max(largest, std::abs(x));
+  EXPECT_GT(largest, 1e-3);
+  EXPECT_LT(history.column("plate_stress").back(), 0.0);
+}
+
 // A checkpoint that cannot be used: exit 2, a message naming the file and the problem, and
 // nothing changed in the output directory.
 class BadCheckpoints : public GeompmRunTest<> {

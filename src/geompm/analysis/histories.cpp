@@ -3,6 +3,9 @@
 #include <limits>
 
 #include "geompm/core/tensor.hpp"
+#include "geompm/structures/cross_section.hpp"
+#include "geompm/structures/deformable_structure.hpp"
+#include "geompm/structures/node_selection.hpp"
 #include "geompm/structures/rigid_structure.hpp"
 
 namespace geompm {
@@ -38,6 +41,25 @@ double strain_energy(const Model& model) {
 
 namespace {
 
+// A deformable structure's history (docs/theory.md §17.7): the mean over some of its nodes (all
+// by default) of their displacement or position, or the mean normal stress over a cross section
+// (eq. 17.15).
+double deformable_value(const DeformableStructure& body, const spec::History& h) {
+  if (h.quantity == "section_stress")
+    return section_stress(body, h.section_point, h.section_normal).mean_normal_stress;
+  const std::vector<Index> nodes =
+      select_nodes(body.mesh(), h.nodes.value_or(spec::StructureNodes{}));
+  Vec3 sum = Vec3::Zero();
+  for (Index a : nodes)
+    sum += h.quantity == "displacement"         ? body.displacement(a)
+           : h.quantity == "phase_displacement" ? body.phase_displacement(a)
+                                                : body.mesh().nodes()[a];
+  return h.quantity == "displacement" || h.quantity == "phase_displacement" ||
+                 h.quantity == "position"
+             ? sum(h.component) / static_cast<double>(nodes.size())
+             : std::numeric_limits<double>::quiet_NaN();
+}
+
 // A structure's history (docs/theory.md §17.4): what its drive exerts (reaction, moment) at the
 // last converged step, its motion since the start of the analysis or of the phase, where its
 // reference point is. Reactions are 0 before the first step.
@@ -47,8 +69,6 @@ double structure_value(const Model& model, const spec::History& h, const StepRes
       if (pair.name == h.structure) return pair.force(h.component);
   for (const auto& structure : model.structures) {
     if (structure->name() != h.structure) continue;
-    const auto* rigid = dynamic_cast<const RigidStructure*>(structure.get());
-    if (!rigid) return std::numeric_limits<double>::quiet_NaN();
     const int c = h.component;
     if (h.quantity == "reaction" || h.quantity == "moment") {
       if (!step) return 0.0;
@@ -56,6 +76,10 @@ double structure_value(const Model& model, const spec::History& h, const StepRes
       if (it == step->structure_forces.end()) return 0.0;
       return (h.quantity == "reaction" ? it->second.force : it->second.moment)(c);
     }
+    if (const auto* body = dynamic_cast<const DeformableStructure*>(structure.get()))
+      return deformable_value(*body, h);
+    const auto* rigid = dynamic_cast<const RigidStructure*>(structure.get());
+    if (!rigid) return std::numeric_limits<double>::quiet_NaN();
     if (h.quantity == "displacement") return rigid->displacement()(c);
     if (h.quantity == "rotation") return rigid->rotation()(c);
     if (h.quantity == "phase_displacement") return rigid->phase_displacement()(c);

@@ -425,7 +425,7 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   check_boundaries(spec, mesh);
   check_footings_in_mesh(spec, mesh);
   for (const spec::Structure& structure : spec.structures) {
-    model->structures.push_back(build_structure(structure, spec.kinematics, spec.phases));
+    model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
     check_adhesion_strength(*model, model->contacts.back(), structure.contact);
   }

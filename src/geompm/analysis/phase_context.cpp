@@ -30,6 +30,14 @@ PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(
     loads.push_back(std::move(load));
   }
   for (const auto& structure : model.structures) {
+    if (!structure->rigid()) {
+      // A deformable structure: driven on sets of its nodes, several a phase (§17.7).
+      std::vector<const spec::StructureDrive*> drives;
+      for (const spec::StructureDrive& d : phase.structure_drives)
+        if (d.structure == structure->name()) drives.push_back(&d);
+      structure_drives.emplace_back(drives, structure->mesh());
+      continue;
+    }
     structure_drives.emplace_back(model.spec.kinematics);
     for (const spec::StructureDrive& d : phase.structure_drives)
       if (d.structure == structure->name())

@@ -8,6 +8,7 @@
 #include "geompm/analysis/output_fields.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/plot.hpp"
+#include "geompm/structures/deformable_structure.hpp"
 
 namespace geompm {
 
@@ -268,6 +269,14 @@ void OutputWriter::write_structures(double time, int step_number) {
     nodes.scalars.emplace_back("contact_pressure", std::move(pressure));
     nodes.scalars.emplace_back("contact_shear", std::move(shear));
     nodes.integers.emplace_back("contact_state", std::move(state));
+    if (const auto* body = dynamic_cast<const DeformableStructure*>(&structure)) {
+      // A deformable structure's stress: each cell's mean over its Gauss points (§17.7).
+      std::vector<Mat3> stress = body->cell_stress();
+      std::vector<double> mean(stress.size());
+      for (std::size_t c = 0; c < stress.size(); ++c) mean[c] = stress[c].trace() / 3.0;
+      cells.tensors.emplace_back("stress", std::move(stress));
+      cells.scalars.emplace_back("mean_stress", std::move(mean));
+    }
     const std::string name =
         fmt::format("vtk/structure_{}_{:06d}.vtu", structure.name(), step_number);
     write_vtu_mesh(dir_ / name, structure.mesh().mesh(), x, nodes, cells);

@@ -302,12 +302,12 @@ void StepSolver::constrain(const PhaseContext& phase, double t0, double t1, Step
     }
   }
   // Structures (docs/theory.md §17.4): a prescribed component of the motion is a constrained
-  // unknown with its increment over the step; axisymmetry holds the radial one and the rotation.
+  // unknown with its increment over the step; axisymmetry holds the radial one and the rotation
+  // (of a deformable structure: its driven nodes' components, its nodes on the axis radially).
   for (std::size_t k = 0; k < model_.structures.size(); ++k) {
     const int field = dofs.find(model_.structures[k]->field_name());
-    const std::vector<double> increment = phase.structure_drives[k].increment(t0, t1);
-    for (std::size_t c = 0; c < increment.size(); ++c)
-      if (!std::isnan(increment[c])) dofs.constrain(dofs.dof(field, 0, int(c)), increment[c]);
+    for (const DriveConstraint& c : phase.structure_drives[k].constraints(t0, t1))
+      dofs.constrain(dofs.dof(field, c.entity, c.component), c.value);
   }
 }
 
@@ -440,6 +440,10 @@ void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& 
     if (const auto* rigid = dynamic_cast<const RigidStructure*>(model_.structures[k].get()))
       result.structure_forces[rigid->name()] =
           drive_forces(*rigid, phase.structure_drives[k], dofs, result.reaction, step.t1);
+    else if (const auto* body =
+                 dynamic_cast<const DeformableStructure*>(model_.structures[k].get()))
+      result.structure_forces[body->name()] =
+          drive_forces(*body, phase.structure_drives[k], dofs, result.reaction, step.t1);
   if (writes_boundary(model_.spec)) {
     result.boundary = zero_level_set(LevelSet(grid_, model_.points));
     move_facets(result.boundary, grid_, displacement_block(dofs, step.du));

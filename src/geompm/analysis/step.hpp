@@ -17,6 +17,7 @@
 #include "geompm/physics/step_system.hpp"
 #include "geompm/solver/linear_solver.hpp"
 #include "geompm/solver/newton.hpp"
+#include "geompm/structures/deformable_structure_term.hpp"
 #include "geompm/structures/rigid_structure_term.hpp"
 
 namespace geompm {

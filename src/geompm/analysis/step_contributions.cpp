@@ -14,6 +14,7 @@
 #include "geompm/physics/point_integrator.hpp"
 #include "geompm/physics/point_springs.hpp"
 #include "geompm/physics/sparse_node_springs.hpp"
+#include "geompm/structures/deformable_structure_term.hpp"
 #include "geompm/structures/rigid_structure_term.hpp"
 
 namespace geompm {
@@ -105,12 +106,19 @@ void body_loads(StepSystem& system, StepContext& c) {
 }
 
 void structures(StepSystem& system, StepContext& c) {
-  // Rigid structures' self-weight, applied loads and, in dynamics, inertia (docs/theory.md §17).
-  for (std::size_t k = 0; k < c.model.structures.size(); ++k)
+  // Structures' self-weight, applied loads and, in dynamics, inertia (docs/theory.md §17); a
+  // deformable structure's internal forces too (§17.7).
+  const auto newmark = c.dynamic ? std::optional<Newmark>(c.newmark) : std::nullopt;
+  for (std::size_t k = 0; k < c.model.structures.size(); ++k) {
+    const StructureDrive& drive = c.phase.structure_drives[k];
     if (auto* rigid = dynamic_cast<RigidStructure*>(c.model.structures[k].get()))
-      system.add(std::make_unique<RigidStructureTerm>(
-          *rigid, system.dofs(), c.phase.gravity(c.t1), c.phase.structure_drives[k].load(c.t1),
-          c.dynamic ? std::optional<Newmark>(c.newmark) : std::nullopt, c.t1 - c.t0));
+      system.add(std::make_unique<RigidStructureTerm>(*rigid, system.dofs(), c.phase.gravity(c.t1),
+                                                      drive.load(c.t1), newmark, c.t1 - c.t0));
+    else if (auto* body = dynamic_cast<DeformableStructure*>(c.model.structures[k].get()))
+      system.add(std::make_unique<DeformableStructureTerm>(
+          *body, system.dofs(), c.phase.gravity(c.t1), drive.nodal_load(c.t1, body->num_nodes()),
+          newmark, c.t1 - c.t0));
+  }
 }
 
 void contacts(StepSystem& system, StepContext& c) {

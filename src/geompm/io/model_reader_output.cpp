@@ -62,14 +62,18 @@ spec::History named_history(const yaml::Node& node, const yaml::Map& section, sp
 
 spec::History read_history(const yaml::Node& node, const Context& context,
                            const std::vector<spec::History>& earlier) {
-  const yaml::Map section =
-      node.map({"quantity", "boundary", "point_set", "footing", "structure", "component", "name"});
+  const yaml::Map section = node.map({"quantity", "boundary", "point_set", "footing", "structure",
+                                      "component", "name", "nodes", "section"});
   spec::History history;
   history.source = node.where();
   if (section.has("structure")) {
     read_structure_history(section, context, history);
     return named_history(node, section, std::move(history), earlier);
   }
+  for (const char* key : {"nodes", "section"})
+    if (auto value = section.find(key))
+      value->fail(
+          fmt::format("{} is given for a history of a deformable structure (structure: ...)", key));
   std::vector<std::string> quantities = vector_quantities;
   quantities.insert(quantities.end(), scalar_quantities.begin(), scalar_quantities.end());
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);

@@ -35,8 +35,9 @@ struct Context {
   std::vector<std::string> node_sets;
   /// Rigid footings of the phases (a name may recur: the same footing in several phases).
   std::vector<std::string> footings;
-  /// Structures (the top-level list).
+  /// Structures (the top-level list), and those of them that are deformable.
   std::vector<std::string> structures;
+  std::vector<std::string> deformable_structures;
 };
 
 // Sections, in file order.
@@ -63,6 +64,8 @@ std::vector<spec::Structure> read_structures(const yaml::Node& node, const std::
                                              Context& context);
 std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,
                                                         const Context& context);
+/// Some nodes of a deformable structure (model_reader_structures.cpp).
+spec::StructureNodes read_structure_nodes(const yaml::Node& node, const Context& context);
 void read_structure_history(const yaml::Map& section, const Context& context,
                             spec::History& history);
 

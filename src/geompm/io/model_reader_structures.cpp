@@ -118,10 +118,20 @@ std::string read_mesh_file(const yaml::Node& node, const std::string& directory)
   return path.string();
 }
 
+// `deformable: {material: steel}`: the structure is a finite-element body of that material
+// (docs/theory.md §17.7).
+std::string read_deformable(const yaml::Node& node, const Context& context) {
+  if (!node.is_map())
+    node.fail("expected the structure's material, e.g. deformable: {material: steel}; found " +
+              node.describe());
+  const yaml::Map section = node.map({"material"});
+  return read_reference(section.required("material"), "material", context.materials);
+}
+
 spec::Structure read_structure(const yaml::Node& node, const std::string& directory,
                                const Context& context) {
-  const yaml::Map section = node.map({"name", "shape", "mesh", "rigid", "density", "mass", "weight",
-                                      "reference_point", "contact"});
+  const yaml::Map section = node.map({"name", "shape", "mesh", "rigid", "deformable", "density",
+                                      "mass", "weight", "reference_point", "contact"});
   spec::Structure s;
   s.source = node.where();
   const yaml::Node name = section.required("name");
@@ -136,14 +146,28 @@ spec::Structure read_structure(const yaml::Node& node, const std::string& direct
     s.shape = read_shape(section.required("shape"), context);
   else
     s.mesh_file = read_mesh_file(section.required("mesh"), directory);
-  if (auto rigid = section.find("rigid")) {
-    s.rigid = rigid->boolean();
-    if (!s.rigid)
-      rigid->fail("deformable structures (rigid: false) are not yet supported; use rigid: true");
+  if (auto deformable = section.find("deformable")) {
+    s.rigid = false;
+    s.material = read_deformable(*deformable, context);
   }
-  const std::string mass = section.exactly_one_of({"density", "mass", "weight"});
-  const double value = read_positive(section.required(mass));
-  (mass == "density" ? s.density : mass == "mass" ? s.mass : s.weight) = value;
+  if (auto rigid = section.find("rigid")) {
+    if (rigid->boolean() != s.rigid)
+      rigid->fail(s.rigid ? "a deformable structure is made by its material: give deformable: "
+                            "{material: <a materials entry>} instead of rigid: false"
+                          : "a structure is either rigid or deformable: remove rigid: true");
+  }
+  // A rigid structure's mass is given; a deformable one's is its material's unless given.
+  std::string mass;
+  if (s.rigid || section.has("density") || section.has("mass") || section.has("weight"))
+    mass = section.exactly_one_of({"density", "mass", "weight"});
+  if (!mass.empty()) {
+    const double value = read_positive(section.required(mass));
+    (mass == "density" ? s.density : mass == "mass" ? s.mass : s.weight) = value;
+  }
+  if (auto reference = section.find("reference_point"); reference && !s.rigid)
+    reference->fail(
+        "a deformable structure has no rigid-body motion to refer to a point: remove "
+        "reference_point");
   if (auto reference = section.find("reference_point")) {
     s.reference_point = reference->vector(context.dimension);
     if (context.kinematics == Kinematics::Axisymmetric && s.reference_point->x() != 0)
@@ -169,6 +193,88 @@ void read_rotation(const yaml::Node& node, const Context& context, bool free_all
   } else if (!node.is_null() || !free_allowed) {
     into[5] = read_expression(node, time_only);
   }
+}
+
+}  // namespace
+
+spec::StructureNodes read_structure_nodes(const yaml::Node& node, const Context& context) {
+  spec::StructureNodes nodes;
+  nodes.source = node.where();
+  using Kind = spec::StructureNodes::Kind;
+  if (node.is_map()) {
+    const yaml::Map box = node.map({"min", "max"});
+    nodes.kind = Kind::Box;
+    nodes.min = box.required("min").vector(context.dimension);
+    nodes.max = box.required("max").vector(context.dimension);
+    for (int i = 0; i < context.dimension; ++i)
+      if (nodes.min(i) > nodes.max(i))
+        box.required("max").fail(fmt::format("expected max >= min in every component ({} > {})",
+                                             nodes.min(i), nodes.max(i)));
+    return nodes;
+  }
+  if (!node.is_scalar())
+    node.fail(
+        "expected the structure's nodes: all, top, bottom, left, right, a node group of its Gmsh "
+        "mesh, or a box {min: [..], max: [..]}; found " +
+        node.describe());
+  static const std::map<std::string, Kind> kinds = {{"all", Kind::All},
+                                                    {"top", Kind::Top},
+                                                    {"bottom", Kind::Bottom},
+                                                    {"left", Kind::Left},
+                                                    {"right", Kind::Right}};
+  const std::string text = node.text();
+  const auto it = kinds.find(text);
+  nodes.kind = it != kinds.end() ? it->second : Kind::Group;
+  if (nodes.kind == Kind::Group) nodes.group = text;
+  return nodes;
+}
+
+namespace {
+
+// How a phase drives a deformable structure on a set of its nodes: a prescribed displacement or
+// velocity per component, or a force (the set's total) on the free ones.
+spec::StructureDrive read_nodal_drive(const std::string& name, const yaml::Node& node,
+                                      const Context& context) {
+  if (!node.is_map())
+    node.fail(
+        "expected a drive of the structure's nodes, e.g. {nodes: top, velocity: [0, -0.1]}; "
+        "found " +
+        node.describe());
+  const yaml::Map section = node.map(
+      {"nodes", "displacement", "velocity", "force", "rotation", "angular_velocity", "moment"});
+  for (const char* key : {"rotation", "angular_velocity", "moment"})
+    if (auto turning = section.find(key))
+      turning->fail(fmt::format(
+          "'{}' is deformable: it has no rigid-body rotation to prescribe or load; drive the "
+          "displacement, velocity or force of its nodes",
+          name));
+  spec::StructureDrive drive;
+  drive.structure = name;
+  drive.source = node.where();
+  drive.nodes = read_structure_nodes(section.required("nodes"), context);
+  if (section.has("displacement") && section.has("velocity"))
+    section.required("velocity").fail("give either displacement or velocity, not both");
+  drive.velocity = section.has("velocity");
+  const int dim = context.dimension;
+  for (const char* key : {"displacement", "velocity", "force"})
+    if (auto value = section.find(key)) {
+      const auto v = read_expression_vector(*value, dim, time_only, true, "");
+      std::copy(v.begin(), v.end(),
+                std::string(key) == "force" ? drive.load.begin() : drive.motion.begin());
+      if (context.kinematics == Kinematics::Axisymmetric && std::string(key) == "force" &&
+          !v[0].empty() && v[0] != "0")
+        value->items()[0].fail(
+            "in an axisymmetric model a radial force on a set of nodes is a ring load that "
+            "geompm does not apply: give ~ or 0 for x");
+    }
+  static const char* names[] = {"x", "y", "z"};
+  for (int c = 0; c < dim; ++c)
+    if (!drive.motion[c].empty() && !drive.load[c].empty())
+      node.fail(fmt::format(
+          "the {} component of these nodes of '{}' is both prescribed and loaded; a prescribed "
+          "component takes whatever force it needs (its reaction): give ~ for it in the force",
+          names[c], name));
+  return drive;
 }
 
 spec::StructureDrive read_drive(const std::string& name, const yaml::Node& node,
@@ -237,6 +343,7 @@ std::vector<spec::Structure> read_structures(const yaml::Node& node, const std::
         item.fail(fmt::format("the structure name '{}' is already used by {} (line {})", s.name,
                               other.source.key_path, other.source.line));
     context.structures.push_back(s.name);
+    if (!s.rigid) context.deformable_structures.push_back(s.name);
     structures.push_back(std::move(s));
   }
   return structures;
@@ -257,7 +364,20 @@ std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,
                              yaml::did_you_mean(name, context.structures),
                              context.structures.empty() ? "none (add a top-level structures list)"
                                                         : yaml::join(context.structures)));
-    drives.push_back(read_drive(name, drive, context));
+    const bool deformable =
+        std::find(context.deformable_structures.begin(), context.deformable_structures.end(),
+                  name) != context.deformable_structures.end();
+    if (!deformable) {
+      drives.push_back(read_drive(name, drive, context));
+      continue;
+    }
+    // A deformable structure: one drive of a set of its nodes, or a list of them.
+    if (drive.is_list()) {
+      for (const yaml::Node& item : drive.items())
+        drives.push_back(read_nodal_drive(name, item, context));
+    } else {
+      drives.push_back(read_nodal_drive(name, drive, context));
+    }
   }
   return drives;
 }
@@ -265,8 +385,8 @@ std::vector<spec::StructureDrive> read_structure_drives(const yaml::Node& node,
 void read_structure_history(const yaml::Map& section, const Context& context,
                             spec::History& history) {
   const std::vector<std::string> quantities = {
-      "reaction",           "moment",         "displacement", "rotation",
-      "phase_displacement", "phase_rotation", "position",     "contact_force"};
+      "reaction",       "moment",   "displacement",  "rotation",      "phase_displacement",
+      "phase_rotation", "position", "contact_force", "section_stress"};
   history.quantity = section.required("quantity").choice(quantities);
   history.structure =
       read_reference(section.required("structure"), "structure", context.structures);
@@ -274,6 +394,40 @@ void read_structure_history(const yaml::Map& section, const Context& context,
     if (auto other = section.find(key))
       other->fail(fmt::format("a history of a structure takes no {}", key));
   const bool turning = history.quantity == "moment" || history.quantity.ends_with("rotation");
+  const bool deformable =
+      std::find(context.deformable_structures.begin(), context.deformable_structures.end(),
+                history.structure) != context.deformable_structures.end();
+  if (deformable && turning && history.quantity != "moment")
+    section.required("quantity")
+        .fail(fmt::format("'{}' is deformable: it has no rigid-body rotation (give the "
+                          "displacement of some of its "
+                          "nodes instead)",
+                          history.structure));
+  const bool of_nodes = history.quantity == "displacement" ||
+                        history.quantity == "phase_displacement" || history.quantity == "position";
+  if (auto nodes = section.find("nodes")) {
+    if (!deformable || !of_nodes)
+      nodes->fail(
+          "nodes are given for the displacement, phase_displacement or position of a "
+          "deformable structure (the mean of those nodes)");
+    history.nodes = read_structure_nodes(*nodes, context);
+  }
+  if (history.quantity == "section_stress") {
+    // The mean normal stress over a cross section of a deformable structure (eq. 17.15).
+    if (!deformable)
+      section.required("quantity")
+          .fail("section_stress is the stress in a deformable structure; a rigid one has none");
+    const yaml::Map cut = section.required("section").map({"point", "normal"});
+    history.section_point = cut.required("point").vector(context.dimension);
+    history.section_normal = cut.required("normal").vector(context.dimension);
+    if (!(history.section_normal.norm() > 0))
+      cut.required("normal").fail("expected a non-zero normal of the section");
+    if (auto component = section.find("component"))
+      component->fail("section_stress is the normal stress n . sigma n: it takes no component");
+    return;
+  }
+  if (auto cut = section.find("section"))
+    cut->fail("a section is given for quantity: section_stress only");
   const yaml::Node component = section.required("component");
   if (turning && context.dimension == 2) {
     // In 2D the one axis of rotation is z.

@@ -178,12 +178,26 @@ struct Contact {
   SourceLocation source;
 };
 
+/// Some nodes of a deformable structure's mesh (a drive's or a history's): all of them, those at
+/// its top or bottom (largest or smallest y in 2D, z in 3D) or left or right (x), a physical group
+/// of its Gmsh mesh, or those in a box.
+struct StructureNodes {
+  enum class Kind { All, Top, Bottom, Left, Right, Group, Box };
+  Kind kind = Kind::All;
+  std::string group;                            // Group
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // Box
+  SourceLocation source;
+};
+
 struct Structure {
   std::string name;
   Contact contact;  // every structure touches the soil; smooth unless said otherwise
   std::optional<StructureShape> shape;  // either a built-in shape ...
   std::string mesh_file;                // ... or a Gmsh .msh file (absolute path)
   bool rigid = true;
+  /// A deformable structure (docs/theory.md §17.7): the name of the materials entry its Gauss
+  /// points follow (its density the material's unless density, mass or weight is given).
+  std::string material;
   std::optional<double> density, mass, weight;
   std::optional<Vec3> reference_point;  // of its rotation; default: the centroid
   SourceLocation source;
@@ -193,11 +207,14 @@ struct Structure {
 /// reference point (0, 1, 2: x, y, z) and rotations about it (3, 4, 5: about x, y, z; in 2D
 /// only 5). A component with a motion is prescribed (its displacement since the phase start or
 /// its velocity); the others are free, loaded by the given force or moment (and self-weight).
+/// A deformable structure is driven on sets of its nodes (`nodes`; translations only, the force
+/// the set's total), several per phase.
 struct StructureDrive {
   std::string structure;
-  bool velocity = false;              // motion components are velocities (angular velocities)
-  std::array<std::string, 6> motion;  // expressions of t; "" = free
-  std::array<std::string, 6> load;    // force, moment: expressions of t; "" = none
+  std::optional<StructureNodes> nodes;  // deformable structures only
+  bool velocity = false;                // motion components are velocities (angular velocities)
+  std::array<std::string, 6> motion;    // expressions of t; "" = free
+  std::array<std::string, 6> load;      // force, moment: expressions of t; "" = none
   SourceLocation source;
 };
 
@@ -289,6 +306,12 @@ struct History {
   std::string footing;    // reaction and displacement of a rigid footing
   std::string structure;  // reaction, moment, displacement, rotation, position of a structure
   int component = -1;     // 0, 1, 2; -1 for scalars
+  /// A deformable structure's displacement, phase_displacement, position: the mean of these
+  /// nodes (default all).
+  std::optional<StructureNodes> nodes;
+  /// section_stress of a deformable structure: the mean normal stress n . sigma n over its cross
+  /// section by the line (2D) or plane (3D) through `section_point` normal to `section_normal`.
+  Vec3 section_point = Vec3::Zero(), section_normal = Vec3::Zero();
   SourceLocation source;
 };
 
