@@ -123,8 +123,8 @@ TEST_P(DeformableColumn, SettlesUnderItsWeightAsTheFiniteStrainClosedForm) {
                                              held(Kind::Bottom, {true, true, true})};
   if (three) {
     spec::StructureDrive front, back;
-    front.nodes = spec::StructureNodes{Kind::Box, "", Vec3(-1, 0, -1), Vec3(1, 0, 3)};
-    back.nodes = spec::StructureNodes{Kind::Box, "", Vec3(-1, 0.2, -1), Vec3(1, 0.2, 3)};
+    front.nodes = spec::StructureNodes{Kind::Box, "", Vec3(-1, 0, -1), Vec3(1, 0, 3), {}};
+    back.nodes = spec::StructureNodes{Kind::Box, "", Vec3(-1, 0.2, -1), Vec3(1, 0.2, 3), {}};
     front.motion[1] = back.motion[1] = "0";
     given.push_back(front);
     given.push_back(back);
@@ -186,7 +186,7 @@ TEST(DeformableCantilever, BendsUnderATipLoadAsTimoshenkosBeam) {
                         *material, 0.0);
   using Kind = spec::StructureNodes::Kind;
   spec::StructureDrive clamp = held(Kind::Left, {true, true, false}), tip;
-  tip.nodes = spec::StructureNodes{Kind::Right};
+  tip.nodes = spec::StructureNodes{Kind::Right, "", Vec3::Zero(), Vec3::Zero(), {}};
   tip.load[1] = "-1";
   const StructureDrive drive({&clamp, &tip}, s.mesh());
   const DriveForces reaction = solve(s, drive, Vec3::Zero());
