@@ -4,32 +4,16 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/structures/structure_quadrature.hpp"
 
 namespace geompm {
 
 namespace {
 
-// Sums f(x, w) over every Gauss point x of the mesh with its weight w = det J times the rule's
-// weight (times r, per radian, in axisymmetry).
+// Sums f(x, w) over every Gauss point x of the mesh with its weight w.
 template <class F>
 void integrate(const StructureMesh& structure, F&& f) {
-  const Mesh& mesh = structure.mesh();
-  const bool radial = structure.kinematics() == Kinematics::Axisymmetric;
-  dispatch_cell_type(mesh.cell_type, [&](auto element) {
-    using E = decltype(element);
-    constexpr CellType T = cell_type_of<E>;
-    for (Index c = 0; c < mesh.num_cells(); ++c) {
-      const NodeCoordinates<T> nodes = cell_node_coordinates<T>(mesh, c);
-      for (int q = 0; q < E::quadrature_size(); ++q) {
-        const typename E::Local xi = E::quadrature_point(q);
-        Vec3 x = Vec3::Zero();
-        x.head<E::dim>() = map_to_physical<T>(nodes, xi);
-        double w = jacobian<T>(nodes, xi).determinant() * E::quadrature_weight(q);
-        if (radial) w *= x.x();
-        f(x, w);
-      }
-    }
-  });
+  for_each_gauss_point(structure, [&](Index, int, const Vec3& x, double w) { f(x, w); });
 }
 
 }  // namespace
