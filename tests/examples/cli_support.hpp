@@ -54,15 +54,18 @@ inline std::string read_text(const std::filesystem::path& file) {
 }
 
 /// Runs geompm with `args` in the directory `cwd`; stdout and stderr are captured into files of
-/// `capture` (outside `cwd`, so that they never look like output of the run).
+/// `capture` (outside `cwd`, so that they never look like output of the run). `prefix`: shell
+/// commands run first in the same shell (a `ulimit`, a `trap`).
 inline CommandResult run_geompm(const std::vector<std::string>& args,
                                 const std::filesystem::path& cwd,
-                                const std::filesystem::path& capture) {
+                                const std::filesystem::path& capture,
+                                const std::string& prefix = "") {
   const std::filesystem::path out = capture / "stdout.txt", err = capture / "stderr.txt";
   // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "literal" + string.
   std::string command = "cd ";
-  for (const std::string& piece :
-       {shell_quote(cwd.string()), std::string(" && exec "), shell_quote(GEOMPM_BINARY)})
+  for (const std::string& piece : {shell_quote(cwd.string()), std::string(" && "),
+                                   prefix.empty() ? std::string() : prefix + "; ",
+                                   std::string("exec "), shell_quote(GEOMPM_BINARY)})
     command += piece;
   for (const auto& a : args) {
     command += ' ';

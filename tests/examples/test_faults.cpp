@@ -53,22 +53,7 @@ class Faults : public GeompmRunTest<> {
  protected:
   /// geompm with `args` under a shell `prefix` (ulimit, trap) in the working directory.
   CommandResult geompm_under(const std::string& prefix, const std::vector<std::string>& args) {
-    std::string command = "cd " + shell_quote(work().string()) + " && " + prefix + "; exec " +
-                          shell_quote(GEOMPM_BINARY);
-    for (const auto& a : args) command += " " + shell_quote(a);
-    const fs::path out = root_ / "capture" / "out.txt", err = root_ / "capture" / "err.txt";
-    command += " </dev/null >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
-    const int status = std::system(command.c_str());
-    CommandResult r;
-    if (status != -1 && WIFEXITED(status)) {
-      r.exited = true;
-      r.exit_code = WEXITSTATUS(status);
-    } else if (status != -1 && WIFSIGNALED(status)) {
-      r.signal = WTERMSIG(status);
-    }
-    r.out = read_text(out);
-    r.err = read_text(err);
-    return r;
+    return run_geompm(args, work(), root_ / "capture", prefix);
   }
 };
 
