@@ -93,7 +93,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       result.failure = verdict.failure;
       return result;
     }
-    // The Newton correction K dx = R (eq. 4.4), to the forcing term's tolerance (eq. 4.12).
+    // The Newton correction K dx = R (eq. 4.4), to the forcing term's tolerance (eq. 4.11).
     const auto start = std::chrono::steady_clock::now();
     try {
       solver.setup(tangent);

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <mutex>
-#include <stdexcept>
+#include <set>
+#include <sstream>
 
+#include "geompm/core/error.hpp"
 #include "geompm/solver/linear_solver.hpp"
 
 namespace geompm::petsc {
@@ -28,8 +30,7 @@ struct Session {
       throw std::runtime_error("PETSc: PetscInitialize failed");
     PetscPushErrorHandler(&keep_message, nullptr);
     if (!options.empty() && PetscOptionsInsertString(nullptr, options.c_str()) != 0)
-      throw std::invalid_argument(
-          fmt::format("PETSc options '{}' not understood: {}", options, last_message));
+      throw InputError(fmt::format("PETSc options '{}' not understood: {}", options, last_message));
   }
   ~Session() { PetscFinalize(); }
   Session(const Session&) = delete;
@@ -46,12 +47,14 @@ const Session& session(const std::string& options) {
 
 }  // namespace
 
+static const std::string& session_options() { return session("").options; }
+
 void initialise(const std::string& options) {
   const std::lock_guard lock(session_mutex);
   const Session& s = session(options);
   if (!options.empty() && options != s.options)
-    throw std::invalid_argument(fmt::format(
-        "PETSc options '{}' given after PETSc was initialised with '{}'", options, s.options));
+    throw InputError(fmt::format("PETSc options '{}' given after PETSc was initialised with '{}'",
+                                 options, s.options));
 }
 
 void check(PetscErrorCode code, const char* what) {
@@ -67,11 +70,23 @@ std::string unused_options() {
   char** names = nullptr;
   char** values = nullptr;
   if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0) return {};
+  // Only the user's: the defaults the solvers put in the database (set_default) for another
+  // solver's objects are not a mistake.
+  std::istringstream given(session_options());
+  std::set<std::string> user;
+  for (std::string word; given >> word;)
+    if (word.size() > 1 && word[0] == '-') user.insert(word.substr(1));
   std::string unused;
   for (PetscInt i = 0; i < count; ++i)
-    unused += (unused.empty() ? "-" : " -") + std::string(names[i]);
+    if (user.count(names[i])) unused += (unused.empty() ? "-" : " -") + std::string(names[i]);
   PetscOptionsLeftRestore(nullptr, &count, &names, &values);
   return unused;
+}
+
+void set_default(const char* key, const char* value) {
+  PetscBool given = PETSC_FALSE;
+  check(PetscOptionsHasName(nullptr, nullptr, key, &given), "PetscOptionsHasName");
+  if (!given) check(PetscOptionsSetValue(nullptr, key, value), "PetscOptionsSetValue");
 }
 
 }  // namespace geompm::petsc

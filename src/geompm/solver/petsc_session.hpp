@@ -22,4 +22,9 @@ void check(PetscErrorCode code, const char* what);
 /// another solver), space-separated; empty if all were used.
 std::string unused_options();
 
+/// Puts `key value` into PETSc's options database unless the user gave the key: a default that
+/// experts may override, for objects a solver does not create itself (a field split's blocks,
+/// multigrid levels).
+void set_default(const char* key, const char* value);
+
 }  // namespace geompm::petsc

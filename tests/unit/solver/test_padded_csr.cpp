@@ -35,7 +35,9 @@ Eigen::MatrixXd padded_dense(const PaddedCsr& csr, const std::vector<double>& va
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(csr.rows, csr.rows);
   for (int r = 0; r < csr.rows; ++r)
     for (int k = csr.row_start[r]; k < csr.row_start[r + 1]; ++k) {
-      if (k > csr.row_start[r]) EXPECT_LT(csr.column[k - 1], csr.column[k]);  // ascending
+      if (k > csr.row_start[r]) {
+        EXPECT_LT(csr.column[k - 1], csr.column[k]);  // ascending
+      }
       dense(r, csr.column[k]) = values[k];
     }
   return dense;
