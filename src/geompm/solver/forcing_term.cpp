@@ -9,7 +9,8 @@ double forcing_term(const ForcingSettings& settings, const std::vector<double>& 
                     double previous, double residual_tolerance) {
   if (!settings.enabled || residuals.empty()) return settings.floor;
   const double r = residuals.back();
-  double eta = settings.maximum;
+  // A step's first correction carries its whole increment: solved tightly (eq. 4.12a).
+  double eta = residuals.size() == 1 ? settings.first : settings.maximum;
   if (residuals.size() >= 2 && previous > 0.0) {
     const double before = residuals[residuals.size() - 2];
     // Eq. 4.12: eta_k = gamma (r_k / r_{k-1})^alpha, and not much below the last one while that
@@ -18,10 +19,10 @@ double forcing_term(const ForcingSettings& settings, const std::vector<double>& 
     const double safeguard = settings.gamma * std::pow(previous, settings.alpha);
     if (safeguard > 0.1) eta = std::max(eta, safeguard);
   }
-  eta = std::min(eta, settings.maximum);
+  if (residuals.size() >= 2) eta = std::min(eta, settings.maximum);
   // Eq. 4.14: no tighter than the solve that takes the residual to half the Newton tolerance.
   if (r > 0.0) eta = std::max(eta, 0.5 * residual_tolerance / r);
-  return std::clamp(eta, settings.floor, settings.maximum);
+  return std::clamp(eta, settings.floor, std::max(settings.maximum, settings.first));
 }
 
 }  // namespace geompm

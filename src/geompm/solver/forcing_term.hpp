@@ -11,10 +11,15 @@
 namespace geompm {
 
 struct ForcingSettings {
-  bool enabled = true;   // false: every solve to `floor`
-  double maximum = 0.1;  // eta_max: the loosest solve
-  double floor = 1e-10;  // the tightest (NewtonSettings::linear_tolerance)
-  double gamma = 0.9;    // Eisenstat-Walker choice 2: eta = gamma (r_k / r_{k-1})^alpha
+  bool enabled = true;  // false: every solve to `floor`
+  /// eta_0, the first solve of a step. Its correction carries the whole increment; where a loose
+  /// one put a point's volume <= 0 beside a footing's edge (examples/mohr_coulomb_footing: the
+  /// first step cut back four times with 0.1, once with 1e-3), a tight one takes the same steps
+  /// and iterations as UMFPACK (docs/theory.md §4.7).
+  double first = 1e-6;
+  double maximum = 1e-3;  // eta_max: the loosest of the later solves
+  double floor = 1e-10;   // the tightest (NewtonSettings::linear_tolerance)
+  double gamma = 0.9;     // Eisenstat-Walker choice 2: eta = gamma (r_k / r_{k-1})^alpha
   double alpha = 2.0;
 };
 
