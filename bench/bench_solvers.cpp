@@ -2,7 +2,7 @@
 // size and solver, the median over repeated steps from the same state of the step's wall time,
 // the linear solver's share of it (setups and solves), Newton iterations, Krylov iterations per
 // Newton solve and the step's peak resident memory per point; one line of a markdown table per
-// case (bench/solver_timings.md, docs/performance.md note 14).
+// case (bench/solver_timings.md, docs/performance.md note 17).
 //
 //   build/bench/bench_solvers                      50,160 cells; umfpack, petsc_gamg, petsc_hypre
 //   GEOMPM_BENCH_CELLS=500 GEOMPM_BENCH_SOLVERS=petsc_gamg GEOMPM_BENCH_REPETITIONS=3

@@ -1,5 +1,5 @@
 // Inexact Newton with an AMG-preconditioned Krylov solver (numerics.linear_solver: petsc_gamg,
-// docs/theory.md §4.7) converges to the direct solver's results: the first quarter of the
+// docs/theory.md §4.8) converges to the direct solver's results: the first quarter of the
 // Mohr-Coulomb strip footing example (plastic from its first steps, a footing of stiff
 // prescribed-motion springs beside soft empty cells), run with UMFPACK and with GAMG, takes the
 // same steps and its histories agree within 1e-6 of each column's largest value, the Newton

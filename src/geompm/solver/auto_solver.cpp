@@ -16,7 +16,7 @@ class AutoSolver : public LinearSolver {
       if (!direct_) direct_ = create_umfpack_solver();
       active_ = direct_.get();
     } else {
-      if (!iterative_) iterative_ = create_petsc_gamg_solver(options_);
+      if (!iterative_) iterative_ = create_petsc_hypre_solver(options_);
       active_ = iterative_.get();
     }
     active_->analyse(pattern, hints);

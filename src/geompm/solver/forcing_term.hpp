@@ -1,4 +1,4 @@
-// The forcing term of an inexact Newton method (docs/theory.md §4.7): the relative tolerance
+// The forcing term of an inexact Newton method (docs/theory.md §4.8): the relative tolerance
 // eta_k to which an iterative linear solver solves K dx = R at Newton iteration k. Loose while
 // the residual is far from converged (an accurate correction of a poor linearisation buys
 // nothing), tightening as Newton converges so that its superlinear convergence is kept
@@ -15,7 +15,7 @@ struct ForcingSettings {
   /// eta_0, the first solve of a step. Its correction carries the whole increment; where a loose
   /// one put a point's volume <= 0 beside a footing's edge (examples/mohr_coulomb_footing: the
   /// first step cut back four times with 0.1, once with 1e-3), a tight one takes the same steps
-  /// and iterations as UMFPACK (docs/theory.md §4.7).
+  /// and iterations as UMFPACK (docs/theory.md §4.8).
   double first = 1e-6;
   double maximum = 1e-3;  // eta_max: the loosest of the later solves
   double floor = 1e-10;   // the tightest (NewtonSettings::linear_tolerance)

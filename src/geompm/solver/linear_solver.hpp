@@ -78,10 +78,12 @@ class LinearSolver {
   virtual const char* name() const = 0;
 };
 
-/// The unknowns below which `auto` picks the direct solver (UMFPACK) and above which AMG
-/// (petsc_gamg): where a step with GAMG became faster than with UMFPACK on the 2D elastic block of
-/// bench/ (docs/performance.md, note 14).
-inline constexpr Index default_direct_limit = 200000;
+/// The unknowns below which `auto` picks the direct solver (UMFPACK) and from which AMG
+/// (petsc_hypre). On the 2D elastic block of bench/ UMFPACK's step was as fast as or faster than
+/// AMG's at every size measured, 10^4 to 10^6 points; at 10^6 points (5·10^5 unknowns) the two
+/// took the same linear-solver time (docs/performance.md, note 17). The limit is that size: AMG
+/// where it no longer costs time, and saves memory (a fifth of a step's peak).
+inline constexpr Index default_direct_limit = 500000;
 
 /// What a solver may be told besides its name (numerics.linear_solver of the model file, or the
 /// command line's --linear-solver and --petsc-options).
@@ -94,7 +96,7 @@ struct LinearSolverOptions {
 };
 
 /// A registered solver by name: "umfpack" (SuiteSparse sparse direct LU; the default),
-/// "sparse_lu" (Eigen's own, no external dependency), "auto" (umfpack or petsc_gamg by size),
+/// "sparse_lu" (Eigen's own, no external dependency), "auto" (umfpack or petsc_hypre by size),
 /// "petsc_gamg", "petsc_hypre", "petsc_mumps" (petsc_solver.hpp). Throws std::invalid_argument
 /// listing the known names.
 std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name,

@@ -378,7 +378,7 @@ struct Numerics {
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
   std::string petsc_options;                // for experts: PETSc's own options (linear_solver.hpp)
-  Index direct_limit = 200000;              // auto: the direct solver below this many unknowns
+  Index direct_limit = 500000;              // auto: the direct solver below this many unknowns
   bool mixed_volume_average = true;         // mixed_volume: cell_average (F-bar) or per_point
   bool mixed_field_pressure = false;        // mixed_material_pressure: field (theory §14) or own
   bool mixed_incremental_pressure = false;  // mixed_pressure_equation: incremental or total

@@ -141,7 +141,7 @@ TEST(PetscSolvers, NearlyIncompressibleMixedBlockMatchesUmfpackThroughTheSchurSp
 // Multigrid: the iterations to a fixed tolerance grow slowly with the number of unknowns (here
 // 4x and 100x the coarsest), where a Jacobi-preconditioned Krylov method's grow with the mesh
 // size's inverse (10x here). BoomerAMG's stay within 1.5x; GAMG's, with the translations alone as
-// its near-null space, grew 11 -> 25 (docs/performance.md, note 14): bounded at 2.5x.
+// its near-null space, grew 11 -> 25 (docs/performance.md, note 17): bounded at 2.5x.
 TEST(PetscSolvers, AmgIterationsStayBoundedAsTheMeshIsRefined) {
   std::vector<int> gamg, hypre;
   for (const int cells : {16, 32, 160}) {
