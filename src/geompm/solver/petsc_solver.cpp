@@ -246,7 +246,7 @@ void PetscSolver::configure(bool symmetric) {
     try {
       check(code, "KSPSetFromOptions");
     } catch (const LinearSolverFailure& e) {
-      throw InputError(fmt::format("{} (numerics.petsc_options)", e.what()));
+      throw InputError(fmt::format("{} (numerics.petsc_options or --petsc-options)", e.what()));
     }
   }
   configured_ = symmetric ? 1 : 0;
@@ -330,10 +330,11 @@ int PetscSolver::solve(const Vector& b, Vector& x, double relative_tolerance) {
   if (!options_checked_) {
     options_checked_ = true;
     if (const std::string unused = petsc::unused_options(); !unused.empty())
-      throw InputError(fmt::format(
-          "numerics.petsc_options: {} not used by the {} solver (misspelt, or meant for another "
-          "solver)",
-          unused, name_));
+      throw InputError(
+          fmt::format("numerics.petsc_options (or --petsc-options): {} not used by the {} solver "
+                      "(misspelt, or meant for another "
+                      "solver)",
+                      unused, name_));
   }
   return method_ == Method::Mumps ? 1 : std::max<int>(1, int(iterations));
 }
