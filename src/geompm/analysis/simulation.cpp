@@ -155,7 +155,8 @@ void Simulation::cut_back(const StepResult& step, double t, double dt) {
 
 void Simulation::check_lost_points(const StepResult& step, double t) {
   const spec::Phase& spec = *phase_->spec;
-  if (model_.points.size() == 0)
+  // A model with an FEM region may have no material points at all (every cell FEM).
+  if (model_.points.size() == 0 && !model_.fem)
     stop(
         fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
                     "up to time {:g} are in {}",
