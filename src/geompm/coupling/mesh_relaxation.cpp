@@ -130,6 +130,8 @@ void MeshRelaxation::relax(Mesh& mesh) const {
   // start (the boundary's is zero), then x = X + d.
   const std::vector<Vec3>& X = region_.initial_nodes();
   const Index n = static_cast<Index>(free_.size());
+  for (Index a = 0; a < mesh.num_nodes(); ++a)
+    if (!region_.fem_node()[a]) mesh.nodes[a] = X[a];  // the outer boundary's, and the start
   if (n == 0) return;
   for (int i = 0; i < mesh.dim(); ++i) {
     Vector d_h = Vector::Zero(mesh.num_nodes());
