@@ -30,6 +30,12 @@ void Model::save_state(ByteWriter& out) const {
   out.put(footing_displacement);
   out.put(lost_mass);
   out.put(lost_points);
+  // The FEM region's Gauss points and the moved mesh (docs/theory.md §19), only with one, so that
+  // a model without keeps its checkpoint's layout.
+  if (fem) {
+    out.put(mesh.nodes);
+    fem->gauss_points().save(out);  // last: its load() expects the end
+  }
 }
 
 void Model::load_state(ByteReader& in) {
@@ -37,6 +43,11 @@ void Model::load_state(ByteReader& in) {
   in.get(footing_displacement);
   in.get(lost_mass);
   in.get(lost_points);
+  if (fem) {
+    in.get(mesh.nodes);
+    fem->gauss_points().load(in);
+    locator = std::make_unique<PointLocator>(mesh);
+  }
   in.expect_end();
 }
 

@@ -79,8 +79,11 @@ std::vector<char> boundary_nodes(const Mesh& mesh) {
   return boundary;
 }
 
-MeshRelaxation::MeshRelaxation(const Mesh& mesh, const FemRegion& region)
-    : region_(region), free_of_(mesh.num_nodes(), -1), fem_coupled_(mesh.num_nodes(), 0) {
+MeshRelaxation::MeshRelaxation(const Mesh& current, const FemRegion& region)
+    : region_(region), free_of_(current.num_nodes(), -1), fem_coupled_(current.num_nodes(), 0) {
+  // Eq. 19.6 is posed on the initial mesh, wherever the mesh is now (a resumed run).
+  Mesh mesh = current;
+  mesh.nodes = region.initial_nodes();
   // Free: nodes of MPM cells that are neither FEM nodes nor on the mesh's boundary.
   const std::vector<char> boundary = boundary_nodes(mesh);
   for (Index c = 0; c < mesh.num_cells(); ++c) {

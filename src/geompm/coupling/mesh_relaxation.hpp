@@ -18,7 +18,7 @@ namespace geompm {
 
 class MeshRelaxation {
  public:
-  /// `mesh` in its initial configuration (the region's initial nodes).
+  /// The Laplacian of eq. 19.6 on `mesh`'s cells at the region's initial nodes.
   MeshRelaxation(const Mesh& mesh, const FemRegion& region);
 
   /// Places the MPM-only nodes of `mesh` (its FEM nodes where the step put them).
