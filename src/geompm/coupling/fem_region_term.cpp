@@ -98,13 +98,7 @@ bool FemRegionTerm::add_cells(const Vector& du, SystemForces* forces, SparseMatr
       if (!integrate_gauss_cell<E>(X, u, axisymmetric, tangent != nullptr, averaged_[k] != 0,
                                    start_of, cell, on_state))
         return false;
-      if (forces)
-        for (int i = 0; i < n; ++i) forces->internal(dofs[i]) += cell.internal_force(i);
-      if (tangent)
-        for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j)
-            if (cell.stiffness(i, j) != 0.0)
-              add_to_tangent(*tangent, dofs_, dofs[i], dofs[j], cell.stiffness(i, j));
+      scatter_cell<E>(cell, dofs, dofs_, forces ? &forces->internal : nullptr, tangent);
     }
     return true;
   });

@@ -5,6 +5,7 @@
 // regions of the background mesh, whose Gauss points carry their state from step to step.
 #pragma once
 
+#include "geompm/dofs/sparsity.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/point_kernel.hpp"
 
@@ -66,6 +67,21 @@ bool integrate_gauss_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X,
     on_state(q, r);
   }
   return true;
+}
+
+/// Adds a cell's internal force to `internal` and its stiffness to `tangent` (either may be null)
+/// at the cell's unknowns `dofs` (node-major, E::nodes * E::dim of them).
+template <class E>
+void scatter_cell(const PointKernelResult<E>& cell, const Index* dofs, const DofMap& map,
+                  Vector* internal, SparseMatrix* tangent) {
+  constexpr int n = E::nodes * E::dim;
+  if (internal)
+    for (int i = 0; i < n; ++i) (*internal)(dofs[i]) += cell.internal_force(i);
+  if (tangent)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        if (cell.stiffness(i, j) != 0.0)
+          add_to_tangent(*tangent, map, dofs[i], dofs[j], cell.stiffness(i, j));
 }
 
 }  // namespace geompm

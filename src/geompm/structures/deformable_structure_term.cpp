@@ -95,13 +95,7 @@ bool DeformableStructureTerm::add_cells(const Vector& du, SystemForces* forces,
         }
       GaussPointState* out = states ? states->data() + c * E::quadrature_size() : nullptr;
       if (!integrate_cell<E>(structure_, c, X, u, tangent != nullptr, cell, out)) return false;
-      if (forces)
-        for (int k = 0; k < n; ++k) forces->internal(dofs[k]) += cell.internal_force(k);
-      if (tangent)
-        for (int k = 0; k < n; ++k)
-          for (int l = 0; l < n; ++l)
-            if (cell.stiffness(k, l) != 0.0)
-              add_to_tangent(*tangent, dofs_, dofs[k], dofs[l], cell.stiffness(k, l));
+      scatter_cell<E>(cell, dofs, dofs_, forces ? &forces->internal : nullptr, tangent);
     }
     return true;
   });
