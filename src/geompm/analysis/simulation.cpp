@@ -225,11 +225,17 @@ void Simulation::accept(const StepResult& step, double dt) {
   const double done_here = done_duration_ - done_duration_before_;
   const double eta =
       done_here > 0 ? seconds_since(started_) * (total_duration - done_duration_) / done_here : 0;
+  // With an FEM region, the MPM cells' shape after the relaxation (docs/theory.md §19.3).
+  const std::string mesh =
+      step.mesh_quality ? fmt::format(" | MPM mesh {:.1f} deg, aspect {:.1f}",
+                                      step.mesh_quality->smallest_angle,
+                                      step.mesh_quality->largest_aspect_ratio)
+                        : std::string();
   progress_.update(
       fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | "
-                  "r {:.2e} | ETA {}",
+                  "r {:.2e}{} | ETA {}",
                   spec.name, step_number_, control_->time(), spec.duration, dt, iterations,
-                  step.newton.residuals.back(), format_duration(eta)));
+                  step.newton.residuals.back(), mesh, format_duration(eta)));
   checkpoint_if_due(phase_done);
 }
 
