@@ -495,6 +495,9 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
       found[p] = *where;
     else
       lost[p] = 1;
+    // A point that crossed into an FEM cell would add its mass and stiffness to the cell's Gauss
+    // points' (docs/theory.md §19): it is handled as one that left the mesh.
+    if (!lost[p] && model_.fem && model_.fem->fem_cell()[found[p].cell]) lost[p] = 1;
   }
   for (Index p = 0; p < n; ++p)
     if (lost[p]) result.lost.emplace_back(points.id[p], destination[p]);
