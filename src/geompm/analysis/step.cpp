@@ -12,6 +12,7 @@
 #include "geompm/physics/inertia.hpp"
 #include "geompm/physics/newmark.hpp"
 #include "geompm/physics/point_integrator.hpp"
+#include "geompm/physics/point_springs.hpp"
 
 namespace geompm {
 
@@ -61,6 +62,7 @@ class LagrangianProblem final : public NonlinearProblem {
         dofs_(system.dofs()),
         du_(du),
         inertia_(inertia),
+        springs_(system.find<PointSprings>()),
         points_(*system.find<PointIntegrator>()) {}
 
   bool evaluate(const Vector& x, Vector& residual, double& force_scale,
@@ -81,6 +83,9 @@ class LagrangianProblem final : public NonlinearProblem {
     force_scale =
         std::max({forces_.external.norm(), forces_.internal.norm(), forces_.inertia.norm()});
     if (inertia_) force_scale = std::max(force_scale, inertia_->momentum_rate());
+    // And the forces a prescribed point motion would take in the body's own stiffness: a body
+    // driven through a rigid motion has nothing else but round-off.
+    if (springs_) force_scale = std::max(force_scale, springs_->driving_force_scale());
     return true;
   }
 
@@ -127,6 +132,7 @@ class LagrangianProblem final : public NonlinearProblem {
   const DofMap& dofs_;
   Vector& du_;
   const Inertia* inertia_;
+  const PointSprings* springs_;  // prescribed point motion, if any
   const PointIntegrator& points_;
   SystemForces forces_;
   Index largest_dof_ = -1;
@@ -170,6 +176,15 @@ std::string out_of_balance(const DofMap& dofs, const Mesh& mesh, Index dof, doub
     return fmt::format("largest residual in the pressure equation of node {} at {}", u.node, at);
   return fmt::format("largest out-of-balance force {:.3g} in {} at node {} {}", value,
                      "xyz"[u.unknown], u.node, at);
+}
+
+// Whether a dynamic step starts where the points carry no acceleration: the first step of the
+// first phase, or of a phase after a quasi-static one (whose convection zeroes it).
+bool starts_from_rest(const spec::Model& model, const spec::Phase& phase, double t0) {
+  if (t0 != 0.0) return false;
+  const auto index = &phase - model.phases.data();  // the phase is one of the model's
+  return index <= 0 || index > std::ssize(model.phases) ||
+         model.phases[std::size_t(index) - 1].dynamics.quasi_static;
 }
 
 }  // namespace
@@ -318,7 +333,8 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
   step.t0 = t0;
   step.t1 = t0 + dt;
   step.dynamic = !phase.spec->dynamics.quasi_static;
-  step.newmark = Newmark{phase.spec->dynamics.beta, phase.spec->dynamics.gamma, dt};
+  const spec::Dynamics& dynamics = phase.spec->dynamics;
+  step.newmark = Newmark{dynamics.beta, dynamics.gamma, dt, dynamics.alpha_m};
   grid_.initialise(model_.points);
   if (grid_.mixed()) pressure_.initialise(grid_, model_.points);
   system_ = std::make_unique<StepSystem>(grid_);
@@ -331,6 +347,12 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
   constrain(phase, step.t0, step.t1, step);
   system_->build_pattern();
   step.du = system_->dofs().prescribed();
+  if (step.dynamic && starts_from_rest(model_.spec, *phase.spec, t0)) {
+    SystemForces at_start;
+    if (system_->evaluate(Vector::Zero(system_->dofs().size()), at_start, false))
+      system_->find<Inertia>()->start_in_balance(at_start);
+    system_->restart();
+  }
 }
 
 bool writes_boundary(const spec::Model& spec) {

@@ -193,10 +193,8 @@ spec::Numerics read_numerics(const yaml::Node& node) {
     numerics.empty_cell_stiffness = read_non_negative(*stiffness);
   if (auto stiffness = section.find("sparse_node_stiffness"))
     numerics.sparse_node_stiffness = read_non_negative(*stiffness);
-  if (auto gamma = section.find("ghost_penalty")) {
+  if (auto gamma = section.find("ghost_penalty"))
     numerics.ghost_penalty = read_non_negative(*gamma);
-    numerics.ghost_penalty_source = gamma->where();
-  }
   // A fill limit alone would be read and silently do nothing: ask for the stiffness it limits
   // (an explicit 0 is a deliberate switch-off and keeps the limit).
   const auto read_fill_limit = [&section](const char* key, const char* stiffness, const char* what,

@@ -76,19 +76,16 @@ void check_step_count(const yaml::Node& node, double duration, const spec::TimeS
                     step.min, duration));
 }
 
-spec::Dynamics read_dynamics(const yaml::Node& node) {
-  spec::Dynamics dynamics;
-  if (node.is_scalar()) {
-    dynamics.quasi_static = node.choice({"quasi_static", "newmark"}) == "quasi_static";
-    return dynamics;
-  }
-  if (!node.is_map())
-    node.fail("expected quasi_static, newmark, or {newmark: {beta, gamma}}; found " +
-              node.describe());
-  const yaml::Map section = node.map({"newmark"});
-  const yaml::Node newmark = section.required("newmark");
+// The Bossak scheme (docs/theory.md §4.7) with its second-order beta and gamma.
+void set_bossak(spec::Dynamics& dynamics, double alpha_m) {
   dynamics.quasi_static = false;
-  if (newmark.is_null()) return dynamics;  // "newmark:" alone: the defaults
+  dynamics.alpha_m = alpha_m;
+  dynamics.beta = 0.25 * (1.0 - alpha_m) * (1.0 - alpha_m);
+  dynamics.gamma = 0.5 - alpha_m;
+}
+
+void read_newmark_parameters(const yaml::Node& newmark, spec::Dynamics& dynamics) {
+  if (newmark.is_null()) return;  // "newmark:" alone: the defaults
   const yaml::Map parameters = newmark.map({"beta", "gamma"});
   if (auto beta = parameters.find("beta")) {
     dynamics.beta = beta->number();
@@ -100,6 +97,40 @@ spec::Dynamics read_dynamics(const yaml::Node& node) {
     if (!(dynamics.gamma >= 0.5 && dynamics.gamma <= 1))
       gamma->fail(fmt::format("Newmark gamma must lie in [0.5, 1], found {}", dynamics.gamma));
   }
+}
+
+void read_bossak_parameters(const yaml::Node& bossak, spec::Dynamics& dynamics) {
+  set_bossak(dynamics, spec::damped_alpha_m);
+  if (bossak.is_null()) return;  // "bossak:" alone: the damped preset's alpha_m
+  const yaml::Map parameters = bossak.map({"alpha_m"});
+  if (auto alpha = parameters.find("alpha_m")) {
+    const double alpha_m = alpha->number();
+    // Unconditionally stable and second-order for alpha_m in [-1/3, 0] (Wood et al. 1980).
+    if (!(alpha_m >= -1.0 / 3.0 && alpha_m <= 0))
+      alpha->fail(fmt::format("Bossak alpha_m must lie in [-1/3, 0], found {}", alpha_m));
+    set_bossak(dynamics, alpha_m);
+  }
+}
+
+spec::Dynamics read_dynamics(const yaml::Node& node) {
+  spec::Dynamics dynamics;
+  constexpr const char* expected =
+      "expected quasi_static, newmark, damped, {newmark: {beta, gamma}} or {bossak: {alpha_m}}";
+  if (node.is_scalar()) {
+    const std::string choice = node.choice({"quasi_static", "newmark", "damped"});
+    dynamics.quasi_static = choice == "quasi_static";
+    if (choice == "damped") set_bossak(dynamics, spec::damped_alpha_m);
+    return dynamics;
+  }
+  if (!node.is_map()) node.fail(fmt::format("{}; found {}", expected, node.describe()));
+  const yaml::Map section = node.map({"newmark", "bossak"});
+  const auto newmark = section.find("newmark");
+  const auto bossak = section.find("bossak");
+  if (newmark.has_value() == bossak.has_value())
+    node.fail(fmt::format("{}: give one of newmark and bossak", expected));
+  dynamics.quasi_static = false;
+  if (newmark) read_newmark_parameters(*newmark, dynamics);
+  if (bossak) read_bossak_parameters(*bossak, dynamics);
   return dynamics;
 }
 

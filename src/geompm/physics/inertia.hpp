@@ -20,6 +20,11 @@ class Inertia final : public Contribution {
   /// |M v0| / dt: the momentum rate of the grid's motion at the start of the step, the force
   /// scale of a body that moves freely without loads.
   double momentum_rate() const;
+  /// A dynamic phase that starts from rest (or from a quasi-static phase, whose points carry no
+  /// acceleration): the start acceleration is the one in balance with the forces at the start,
+  /// M a0 = f_ext - f_int (docs/theory.md §4.7, eq. 4.7e), at every unknown with mass; the forces
+  /// are those of the contributions at a zero increment, inertia left out.
+  void start_in_balance(const SystemForces& at_start);
   /// The acceleration and velocity at the end of the step (per unknown) for the increment du.
   Vector acceleration(const Vector& du) const;
   Vector velocity(const Vector& acceleration) const;

@@ -1,5 +1,7 @@
 #include "geompm/physics/point_springs.hpp"
 
+#include <cmath>
+
 namespace geompm {
 
 namespace {
@@ -31,6 +33,17 @@ void PointSprings::spring(Index p, const Vec3& u, Vec3& force, Mat3& stiffness) 
     reaction(i) = -force(i);
   }
   reaction_[p] = reaction;  // each point by one thread only
+}
+
+double PointSprings::driving_force_scale() const {
+  double sum = 0.0;
+  for (std::size_t p = 0; p < targets_.stiffness.size(); ++p)
+    for (int i = 0; i < grid_.dim(); ++i)
+      if (targets_.mask[p] >> i & 1u) {
+        const double f = targets_.stiffness[p] / spring_ratio * targets_.target[p](i);
+        sum += f * f;
+      }
+  return std::sqrt(sum);
 }
 
 void PointSprings::report(const Vector& /*du*/, Reactions& reactions) {

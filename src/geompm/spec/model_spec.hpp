@@ -260,9 +260,11 @@ struct TimeStepping {
   double initial = 0.0;
   double min = 0.0;
   double max = 0.0;
-  double growth = 1.5;      // factor after an easy step
-  double cutback = 0.5;     // factor after a failed step
-  int easy_iterations = 4;  // a step with at most this many iterations is easy
+  double growth = 1.5;   // factor after an easy step
+  double cutback = 0.5;  // factor after a failed step
+  // A step with at most this many iterations is easy; 0: half of the phase's max_iterations,
+  // plus one (easy_iterations_for).
+  int easy_iterations = 0;
 };
 
 struct Newton {
@@ -283,10 +285,16 @@ struct Newton {
   int extrapolated_patience = 0;
 };
 
+/// The `damped` preset: Bossak's scheme damping the highest frequencies to a spectral radius of
+/// (1 + alpha_m) / (1 - alpha_m) = 0.82 (docs/theory.md §4.7); a mode of 20 steps a period loses
+/// about 0.5 % of its amplitude a period.
+inline constexpr double damped_alpha_m = -0.1;
+
 struct Dynamics {
   bool quasi_static = true;
   double beta = 0.25;  // Newmark; trapezoidal rule by default (no numerical damping)
   double gamma = 0.5;
+  double alpha_m = 0.0;  // Bossak's weight of the old acceleration (docs/theory.md §4.7)
 };
 
 struct Phase {
@@ -384,7 +392,6 @@ struct Numerics {
   double sparse_node_fill = 0.05;       // support fill below which a node gets that spring
   double ghost_penalty = 0.0;           // gamma of the edge cells' face penalty (eq. 6.3)
   double ghost_penalty_fill = 0.5;      // fill up to which an edge cell carries it
-  SourceLocation ghost_penalty_source;  // where it was given, for errors found with the mesh
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";

@@ -105,7 +105,8 @@ void DeformableStructureTerm::add_inertia(const Vector& u, SystemForces& forces,
                                           SparseMatrix* tangent) const {
   // M a with Newmark's acceleration of the nodes (seed eq. 8), M / (beta dt^2) on the tangent;
   // M acts on each component alike.
-  const Vector a = newmark_->acceleration(u, structure_.velocity(), structure_.acceleration());
+  const Vector a =
+      newmark_->inertial_acceleration(u, structure_.velocity(), structure_.acceleration());
   const int dim = structure_.dim();
   const Mesh& mesh = structure_.mesh().mesh();
   for (Index c = 0; c < mesh.num_cells(); ++c) {

@@ -28,8 +28,8 @@ bool RigidStructureTerm::add(const Vector& du, SystemForces& forces, SparseMatri
   if (!newmark_) return true;
   // Inertia with Newmark's acceleration of the unknowns (eq. 17.9, seed eq. 8), M / (beta dt^2) on
   // the tangent.
-  const Vector a =
-      newmark_->acceleration(unknowns(du), structure_.velocity(), structure_.acceleration());
+  const Vector a = newmark_->inertial_acceleration(unknowns(du), structure_.velocity(),
+                                                   structure_.acceleration());
   const Vector inertia = mass_ * a;
   for (std::size_t k = 0; k < dofs_of_.size(); ++k) forces.inertia(dofs_of_[k]) += inertia(k);
   if (tangent)

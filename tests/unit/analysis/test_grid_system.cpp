@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 
 #include "geompm/boundary/rigid_footing.hpp"
@@ -34,8 +35,14 @@ enum class FootingChoice { None, Smooth, Rough };
 
 void check_assembled_tangent(const std::string& example, GridInterpolation interpolation,
                              const MaterialChoice* choice = nullptr,
-                             FootingChoice footing = FootingChoice::None) {
+                             FootingChoice footing = FootingChoice::None,
+                             std::optional<CellType> cell = std::nullopt) {
   auto spec = testing::read_example(example);
+  if (cell) {  // the example's generated mesh, other cells (the model's own interpolation: the
+               // settings below give the one under test)
+    spec.mesh.generate->cell_type = *cell;
+    spec.numerics.interpolation = spec::Interpolation::Standard;
+  }
   if (choice)
     for (auto& material : spec.materials) {
       material.model = choice->model;
@@ -285,6 +292,26 @@ TEST(GridSystemTangent, DualDomainPlaneStrain) {
 }
 TEST(GridSystemTangent, DualDomainAxisymmetric) {
   check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::DualDomain);
+}
+// DDMP's smoothed gradients (docs/theory.md §8) on every cell type that carries points.
+TEST(GridSystemTangent, DualDomainTri3) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain, nullptr,
+                          FootingChoice::None, CellType::Tri3);
+}
+TEST(GridSystemTangent, DualDomainTet4) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain, nullptr,
+                          FootingChoice::None, CellType::Tet4);
+}
+TEST(GridSystemTangent, DualDomainHex8) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain);
+}
+TEST(GridSystemTangent, DualDomainMixedMohrCoulombTri3) {
+  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain,
+                          &mixed_mohr_coulomb, FootingChoice::None, CellType::Tri3);
+}
+TEST(GridSystemTangent, DualDomainFBarMohrCoulombTet4) {
+  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain,
+                          &f_bar_mohr_coulomb, FootingChoice::None, CellType::Tet4);
 }
 TEST(GridSystemTangent, GimpPlaneStrain) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp);

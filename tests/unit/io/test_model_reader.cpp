@@ -380,6 +380,29 @@ phases:
   EXPECT_EQ(m.bodies[0].points_per_cell, 1);
 }
 
+TEST(ModelReader, DampedIsBossaksSchemeWithItsSecondOrderParameters) {
+  const spec::Model m = read_model_from_string(R"m(
+analysis: {kinematics: plane_strain}
+mesh: {generate: {x: {length: 25, cells: 13}, y: {length: 1, cells: 1}}}
+materials: {bar: {model: linear_elastic, E: 100, nu: 0, density: 1}}
+bodies:
+  bar: {material: bar, region: all, points_per_cell: 1}
+phases:
+  - {name: damped, duration: 50, time_step: 0.1, dynamics: damped}
+  - {name: bossak, time_step: 0.1, dynamics: {bossak: }}
+  - {name: strong, time_step: 0.1, dynamics: {bossak: {alpha_m: -0.3}}}
+)m",
+                                               "bar.yaml");
+  for (int k = 0; k < 3; ++k) {
+    const spec::Dynamics& d = m.phases[k].dynamics;
+    const double alpha = k < 2 ? -0.1 : -0.3;
+    EXPECT_FALSE(d.quasi_static);
+    EXPECT_DOUBLE_EQ(d.alpha_m, alpha);
+    EXPECT_DOUBLE_EQ(d.gamma, 0.5 - alpha);
+    EXPECT_DOUBLE_EQ(d.beta, 0.25 * (1 - alpha) * (1 - alpha));
+  }
+}
+
 TEST(ModelReader, ReadsAThreeDimensionalModelWrittenInJson) {
   const std::string text = R"m({
   "title": "Spudcan",
