@@ -33,11 +33,8 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir) {
   return output_dir / "checkpoint.bin";
 }
 
-StepControlSettings step_control_settings(const spec::Phase& phase) {
-  const spec::TimeStepping& ts = phase.time_step;
-  const int easy = ts.easy_iterations > 0 ? ts.easy_iterations
-                                          : default_easy_iterations(phase.newton.max_iterations);
-  return {ts.initial, ts.min, ts.max, ts.growth, ts.cutback, easy};
+StepControlSettings step_control_settings(const spec::TimeStepping& ts) {
+  return {ts.initial, ts.min, ts.max, ts.growth, ts.cutback, ts.easy_iterations};
 }
 
 Simulation::Simulation(Model& model, const RunOptions& options)
@@ -114,7 +111,7 @@ void Simulation::run() {
 void Simulation::begin_phase() {
   const spec::Phase& spec = model_.spec.phases[phase_index_];
   phase_ = std::make_unique<PhaseContext>(model_, spec);
-  control_ = std::make_unique<StepController>(step_control_settings(spec), spec.duration);
+  control_ = std::make_unique<StepController>(step_control_settings(spec.time_step), spec.duration);
   stepper_.start_phase();
   for (auto& d : model_.points.phase_displacement) d.setZero();
   for (auto& structure : model_.structures) structure->start_phase();

@@ -23,7 +23,7 @@ namespace geompm {
 std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir);
 
 /// A phase's time stepping as the step controller takes it.
-StepControlSettings step_control_settings(const spec::Phase& phase);
+StepControlSettings step_control_settings(const spec::TimeStepping& time_step);
 
 class Simulation {
  public:

@@ -88,7 +88,7 @@ void Simulation::load(const std::filesystem::path& file) {
   phase_ = std::make_unique<PhaseContext>(model_, spec);
   ByteReader phase_state = contents.section("phase");
   phase_->load(phase_state);
-  control_ = std::make_unique<StepController>(step_control_settings(spec), spec.duration);
+  control_ = std::make_unique<StepController>(step_control_settings(spec.time_step), spec.duration);
   control_->restore(control);
 
   ByteReader step_solver = contents.section("step_solver");

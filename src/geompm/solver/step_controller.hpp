@@ -1,9 +1,8 @@
 // The adaptive time step of a phase (docs/user-guide.md, phases.time_step): start at `initial`;
 // after a step that does not converge, retry it with the step cut back by `cutback`, and give up
 // once that falls below `min`; after a step that converges within `easy_iterations` Newton
-// iterations (default_easy_iterations), grow the next by `growth`; never exceed `max`; and never
-// leave a sliver of a step at the end of the phase (a last step under 1 % of the one before is
-// taken with it).
+// iterations, grow the next by `growth`; never exceed `max`; and never leave a sliver of a step
+// at the end of the phase (a last step under 1 % of the one before is taken with it).
 //
 // Its state (the phase time reached and the step to try next) is two numbers, saved in a
 // checkpoint and restored exactly, so a resumed run takes the same steps as one that never
@@ -12,21 +11,13 @@
 
 namespace geompm {
 
-/// The default easy step: one that used at most half of Newton's allowance, plus one iteration
-/// (8 of 15). A plastic step of a footing takes 6-8 iterations against 2-3 elastic ones, so a
-/// fixed small count (4) let a run that was cut back at the onset of the mechanism never grow
-/// again; 8 took the strip footings from 124 and 194 steps to 45 and 53 for the same curve
-/// (docs/performance.md, note 8). A step that grows too far fails and is cut back: the price is a
-/// few more cut-backs.
-constexpr int default_easy_iterations(int max_iterations) { return max_iterations / 2 + 1; }
-
 struct StepControlSettings {
   double initial = 0.0;
   double min = 0.0;
   double max = 0.0;
   double growth = 1.5;
   double cutback = 0.5;
-  int easy_iterations = default_easy_iterations(15);  // Newton's default max_iterations
+  int easy_iterations = 4;
 };
 
 class StepController {

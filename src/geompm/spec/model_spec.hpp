@@ -262,9 +262,7 @@ struct TimeStepping {
   double max = 0.0;
   double growth = 1.5;   // factor after an easy step
   double cutback = 0.5;  // factor after a failed step
-  // A step with at most this many iterations is easy; 0: half of the phase's max_iterations,
-  // plus one (easy_iterations_for).
-  int easy_iterations = 0;
+  int easy_iterations = 4;  // a step with at most this many iterations is easy
 };
 
 struct Newton {
