@@ -183,6 +183,10 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
       value = step.newton.iterations;
     } else if (h.quantity == "time_step") {
       value = dt;
+    } else if (h.quantity == "mesh_smallest_angle" && step.mesh_quality) {
+      value = step.mesh_quality->smallest_angle;  // the MPM cells' (docs/theory.md §19.3)
+    } else if (h.quantity == "mesh_largest_aspect_ratio" && step.mesh_quality) {
+      value = step.mesh_quality->largest_aspect_ratio;
     }
     v.push_back(value);
   }

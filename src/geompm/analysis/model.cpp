@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 
+#include "geompm/analysis/fem_region_seeding.hpp"
 #include "geompm/analysis/geostatic_stress.hpp"
 #include "geompm/analysis/initial_stress.hpp"
 #include "geompm/analysis/model_size.hpp"
@@ -29,6 +30,12 @@ void Model::save_state(ByteWriter& out) const {
   out.put(footing_displacement);
   out.put(lost_mass);
   out.put(lost_points);
+  // The FEM region's Gauss points and the moved mesh (docs/theory.md §19), only with one, so that
+  // a model without keeps its checkpoint's layout.
+  if (fem) {
+    out.put(mesh.nodes);
+    fem->gauss_points().save(out);  // last: its load() expects the end
+  }
 }
 
 void Model::load_state(ByteReader& in) {
@@ -36,6 +43,11 @@ void Model::load_state(ByteReader& in) {
   in.get(footing_displacement);
   in.get(lost_mass);
   in.get(lost_points);
+  if (fem) {
+    in.get(mesh.nodes);
+    fem->gauss_points().load(in);
+    locator = std::make_unique<PointLocator>(mesh);
+  }
   in.expect_end();
 }
 
@@ -259,9 +271,15 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
                        fmt::format("{}.initial_velocity[{}]", body.source.describe(), d));
 
   const Index before = model.points.size();
+  bool fem_cells = false;  // the body holds FEM cells, seeded at their Gauss points
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     if (body.region.kind == spec::Region::Kind::Group && !regions[b].contains(Vec3::Zero(), c))
       continue;
+    // FEM and buffer cells get no material points (docs/theory.md §19).
+    if (!model.cell_kinds.empty() && model.cell_kinds[c] != CellKind::Mpm) {
+      fem_cells = fem_cells || model.cell_kinds[c] == CellKind::Fem;
+      continue;
+    }
     std::vector<SeedPoint> seeds;
     try {
       seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
@@ -279,7 +297,7 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
       add_body_point(spec, b, s, c, v0, model);
     }
   }
-  if (model.points.size() == before)
+  if (model.points.size() == before && !fem_cells)
     throw InputError(body.region.source,
                      fmt::format("body '{}' has no material points: its region holds no "
                                  "seeding position of any cell",
@@ -428,6 +446,7 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   check_cells_carry_points(spec, mesh);
   model->locator = std::make_unique<PointLocator>(mesh);
   create_materials(spec, *model);
+  build_fem_region(spec, *model);
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);

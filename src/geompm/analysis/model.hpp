@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geompm/contact/contact_pair.hpp"
+#include "geompm/coupling/fem_region.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
@@ -28,6 +29,10 @@ struct Model {
   std::unique_ptr<PointLocator> locator;
   std::vector<std::unique_ptr<Material>> materials;  // in the order of spec.materials
   MaterialPoints points;
+  /// Per mesh cell, its kind (MPM, FEM, buffer: docs/theory.md §19); empty when every cell is MPM.
+  std::vector<CellKind> cell_kinds;
+  /// The FEM cells and their Gauss points; null without FEM cells.
+  std::unique_ptr<FemRegion> fem;
   std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
   /// The structures (docs/theory.md §17), in the order of spec.structures; they move with the
   /// steps that converge (their state is saved by Structure::save).

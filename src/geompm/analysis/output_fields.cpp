@@ -7,7 +7,7 @@
 
 namespace geompm {
 
-std::vector<double> equivalent_plastic_strain(const Model& model) {
+std::vector<double> equivalent_plastic_strain(const Model& model, const MaterialPoints& p) {
   // Where each material keeps it, -1 where it does not.
   std::vector<int> slot(model.materials.size(), -1);
   for (std::size_t m = 0; m < model.materials.size(); ++m)
@@ -15,7 +15,6 @@ std::vector<double> equivalent_plastic_strain(const Model& model) {
       if (std::string_view(model.materials[m]->internal_variable_name(k)) ==
           "equivalent_plastic_strain")
         slot[m] = k;
-  const auto& p = model.points;
   std::vector<double> strain(p.size(), 0.0);
   for (Index i = 0; i < p.size(); ++i) {
     const int k = slot[p.material[i]];
@@ -24,8 +23,8 @@ std::vector<double> equivalent_plastic_strain(const Model& model) {
   return strain;
 }
 
-FieldSet point_fields(const Model& model, const std::vector<Index>& plastic) {
-  const auto& p = model.points;
+FieldSet point_fields(const Model& model, const MaterialPoints& p,
+                      const std::vector<Index>& plastic) {
   const Index n = p.size();
   FieldSet f;
   f.vectors.emplace_back("displacement", p.displacement);
@@ -44,7 +43,7 @@ FieldSet point_fields(const Model& model, const std::vector<Index>& plastic) {
   f.tensors.emplace_back("strain", std::move(strain));
   f.scalars.emplace_back("mean_stress", std::move(mean));
   f.scalars.emplace_back("deviatoric_stress", std::move(q));
-  f.scalars.emplace_back("equivalent_plastic_strain", equivalent_plastic_strain(model));
+  f.scalars.emplace_back("equivalent_plastic_strain", equivalent_plastic_strain(model, p));
   std::vector<Index> flag(n, 0);
   if (static_cast<Index>(plastic.size()) == n) flag = plastic;
   f.integers.emplace_back("plastic", std::move(flag));

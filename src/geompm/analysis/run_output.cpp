@@ -66,6 +66,7 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
       dir_((std::filesystem::create_directories(dir / "vtk"), dir)),
       points_series_(dir / "points.pvd"),
       grid_series_(dir / "grid.pvd"),
+      gauss_series_(dir / "gauss_points.pvd"),
       boundary_series_(dir / "boundary.pvd"),
       boundary_(writes_boundary(model.spec)),
       recorder_(model),
@@ -239,6 +240,12 @@ void OutputWriter::write_points(double time, int step_number) {
   const std::string name = points_file(step_number);
   write_vtu_points(dir_ / name, model_.points.position, point_fields(model_, plastic_));
   points_series_.add(time, name);
+  if (!model_.fem) return;
+  // The FEM region's Gauss points (docs/theory.md §19.1), with the points' fields, beside them.
+  const std::string gauss = fmt::format("vtk/gauss_points_{:06d}.vtu", step_number);
+  const MaterialPoints& g = model_.fem->gauss_points();
+  write_vtu_points(dir_ / gauss, g.position, point_fields(model_, g, {}));
+  gauss_series_.add(time, gauss);
 }
 
 }  // namespace geompm

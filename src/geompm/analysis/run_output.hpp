@@ -71,7 +71,7 @@ class OutputWriter {
 
   Model& model_;
   std::filesystem::path dir_;
-  PvdSeries points_series_, grid_series_, boundary_series_;
+  PvdSeries points_series_, grid_series_, gauss_series_, boundary_series_;  // gauss: FEM region
   bool boundary_;                            // writes_boundary(model.spec)
   std::vector<PvdSeries> structure_series_;  // structure_<name>.pvd, one per structure
   HistoryRecorder recorder_;

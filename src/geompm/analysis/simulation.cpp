@@ -158,7 +158,8 @@ void Simulation::cut_back(const StepResult& step, double t, double dt) {
 
 void Simulation::check_lost_points(const StepResult& step, double t) {
   const spec::Phase& spec = *phase_->spec;
-  if (model_.points.size() == 0)
+  // A model with an FEM region may have no material points at all (every cell FEM).
+  if (model_.points.size() == 0 && !model_.fem)
     stop(
         fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
                     "up to time {:g} are in {}",
@@ -173,11 +174,12 @@ void Simulation::check_lost_points(const StepResult& step, double t) {
     where += fmt::format("\n  point {} would move to ({:.6g}, {:.6g}, {:.6g})", step.lost[k].first,
                          step.lost[k].second.x(), step.lost[k].second.y(), step.lost[k].second.z());
   stop(
-      fmt::format("phase '{}', time {:g}: {} material point(s) left the mesh (policy "
-                  "numerics.lost_points = stop):{}{}\nEnlarge the mesh or set "
+      fmt::format("phase '{}', time {:g}: {} material point(s) left the mesh{} (policy "
+                  "numerics.lost_points = stop):{}{}\nEnlarge the mesh{} or set "
                   "lost_points: remove. Results up to time {:g} are in {}",
-                  spec.name, t, step.lost.size(), where, step.lost.size() > 5 ? "\n  ..." : "",
-                  time_, options_.output_dir.string()));
+                  spec.name, t, step.lost.size(), model_.fem ? " or entered an FEM cell" : "",
+                  where, step.lost.size() > 5 ? "\n  ..." : "",
+                  model_.fem ? " (or the MPM region)" : "", time_, options_.output_dir.string()));
 }
 
 // Which points were removed, and where they went: on the log (the first few of a step) and in
@@ -231,12 +233,17 @@ void Simulation::accept(const StepResult& step, double dt) {
   const double done_here = done_duration_ - done_duration_before_;
   const double eta =
       done_here > 0 ? seconds_since(started_) * (total_duration - done_duration_) / done_here : 0;
+  // With an FEM region, the MPM cells' shape after the relaxation (docs/theory.md §19.3).
+  const std::string mesh = step.mesh_quality ? fmt::format(" | MPM mesh {:.1f} deg, aspect {:.1f}",
+                                                           step.mesh_quality->smallest_angle,
+                                                           step.mesh_quality->largest_aspect_ratio)
+                                             : std::string();
   progress_.update(
       fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | lin {} in {:.2f} s | "
-                  "r {:.2e} | ETA {}",
+                  "r {:.2e}{} | ETA {}",
                   spec.name, step_number_, control_->time(), spec.duration, dt, iterations,
                   step.newton.linear_iterations, step.newton.linear_seconds,
-                  step.newton.residuals.back(), format_duration(eta)));
+                  step.newton.residuals.back(), mesh, format_duration(eta)));
   checkpoint_if_due(phase_done);
 }
 

@@ -40,6 +40,7 @@ GridSettings grid_settings(const Model& model) {
       s.interpolation = GridInterpolation::Gimp;
       break;
   }
+  if (model.fem) s.fem_cells = model.fem->fem_cell();
   for (const auto& material : model.spec.materials) {
     const auto formulation = material.formulation.value_or(model.spec.numerics.formulation);
     const bool mixed = formulation == spec::Formulation::Mixed;
@@ -191,7 +192,9 @@ bool starts_from_rest(const spec::Model& model, const spec::Phase& phase, double
 StepSolver::StepSolver(Model& model, LinearSolver& solver)
     : model_(model),
       solver_(solver),
-      grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {}
+      grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {
+  if (model.fem) relaxation_ = std::make_unique<MeshRelaxation>(model.mesh, *model.fem);
+}
 
 // What a step carries from its set-up to its end.
 struct StepSolver::Step {
@@ -507,6 +510,7 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
   std::vector<Vec3> destination(n);
   std::vector<char> lost(n, 0);
   const Vector nodal_du = displacement_block(system_->dofs(), result.displacement);
+  const std::vector<Vec3> unmoved = model_.fem ? move_mesh(nodal_du, result) : std::vector<Vec3>{};
 #pragma omp parallel for schedule(dynamic, 1024) if (n > 4096)
   for (Index p = 0; p < n; ++p) {
     destination[p] = points.position[p] + grid_.interpolate(points, p, nodal_du);
@@ -514,11 +518,19 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
       found[p] = *where;
     else
       lost[p] = 1;
+    // A point that crossed into an FEM cell would add its mass and stiffness to the cell's Gauss
+    // points' (docs/theory.md §19): it is handled as one that left the mesh.
+    if (!lost[p] && model_.fem && model_.fem->fem_cell()[found[p].cell]) lost[p] = 1;
   }
   for (Index p = 0; p < n; ++p)
     if (lost[p]) result.lost.emplace_back(points.id[p], destination[p]);
-  if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Stop)
+  if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Stop) {
+    if (model_.fem) {
+      model_.mesh.nodes = unmoved;
+      model_.locator = std::make_unique<PointLocator>(model_.mesh);
+    }
     return;
+  }
 
   const DofMap& dofs = system_->dofs();
   pressure_.remember(grid_, dofs, result.displacement);
@@ -539,6 +551,27 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
       }
     points.remove(lost);
   }
+}
+
+}  // namespace geompm
+
+namespace geompm {
+
+std::vector<Vec3> StepSolver::move_mesh(const Vector& nodal_du, StepResult& result) {
+  std::vector<Vec3> before = model_.mesh.nodes;
+  const std::vector<Index>& active = grid_.node_to_active();
+  const int dim = grid_.dim();
+  model_.fem->move_nodes(model_.mesh, [&](Index a) {
+    Vec3 d = Vec3::Zero();
+    for (int i = 0; i < dim; ++i) d(i) = nodal_du(active[a] * dim + i);
+    return d;
+  });
+  relaxation_->relax(model_.mesh);
+  std::vector<char> mpm(model_.fem->fem_cell().size());
+  for (std::size_t c = 0; c < mpm.size(); ++c) mpm[c] = !model_.fem->fem_cell()[c];
+  result.mesh_quality = mesh_quality(model_.mesh, mpm);
+  model_.locator = std::make_unique<PointLocator>(model_.mesh);
+  return before;
 }
 
 }  // namespace geompm

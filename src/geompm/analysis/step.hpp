@@ -7,10 +7,13 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geompm/analysis/phase_context.hpp"
+#include "geompm/coupling/mesh_quality.hpp"
+#include "geompm/coupling/mesh_relaxation.hpp"
 #include "geompm/levelset/zero_level_set.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "geompm/physics/pressure_field.hpp"
@@ -52,6 +55,8 @@ struct StepResult {
   /// The bodies' boundary, the zero level set of the step's start carried by its displacement to
   /// its end, where the output writes it (writes_boundary); empty otherwise.
   std::vector<SurfaceFacet> boundary;
+  /// With an FEM region: the MPM cells' shape after the mesh's relaxation (docs/theory.md §19.3).
+  std::optional<MeshQuality> mesh_quality;
 };
 
 /// Whether the run writes the boundary (boundary.pvd): with ParaView output, in a model with
@@ -104,12 +109,17 @@ class StepSolver {
   void remember_increment(const Vector& du, double dt);
   void convect_and_relocate(StepResult& result, double dt, bool dynamic);
   void commit_motions(PhaseContext& phase, const Step& step);
+  /// With an FEM region: moves its nodes by the converged increment, relaxes the MPM region's
+  /// and finds the points' cells anew in the moved mesh (docs/theory.md §19.3). Returns the
+  /// mesh's nodes before, to restore if the step is not kept.
+  std::vector<Vec3> move_mesh(const Vector& nodal_du, StepResult& result);
 
   Model& model_;
   LinearSolver& solver_;
   GridSystem grid_;
   PressureField pressure_;
-  std::unique_ptr<StepSystem> system_;  // the last step's equations
+  std::unique_ptr<StepSystem> system_;          // the last step's equations
+  std::unique_ptr<MeshRelaxation> relaxation_;  // with an FEM region
   // The last converged step's increment per unit time, per mesh node and unknown (dim
   // displacements, then the pressure): Newton's first iterate with `predictor: extrapolated`.
   std::vector<double> last_rate_;

@@ -6,6 +6,7 @@
 #include "geompm/contact/level_set_contact.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
+#include "geompm/coupling/fem_region_term.hpp"
 #include "geompm/levelset/surface_load.hpp"
 #include "geompm/physics/body_loads.hpp"
 #include "geompm/physics/empty_cell_stiffness.hpp"
@@ -22,6 +23,13 @@ namespace {
 
 void material_points(StepSystem& system, StepContext& c) {
   system.add(std::make_unique<PointIntegrator>(c.grid, c.model.points, system.dofs(), &c.pressure));
+}
+
+void fem_region(StepSystem& system, StepContext& c) {
+  // The FEM cells' Gauss points and their self-weight (docs/theory.md §19).
+  if (c.model.fem)
+    system.add(std::make_unique<FemRegionTerm>(*c.model.fem, c.grid, system.dofs(),
+                                               c.phase.gravity(c.t1)));
 }
 
 void empty_cells(StepSystem& system, StepContext& c) {
@@ -168,9 +176,9 @@ void inertia(StepSystem& system, StepContext& c) {
 using Maker = void (*)(StepSystem&, StepContext&);
 // Contact comes first: it adds its multipliers to the unknowns, which the others size their
 // vectors by.
-constexpr Maker makers[] = {contacts,      material_points, empty_cells,    sparse_node_springs,
-                            ghost_penalty, point_motions,   rigid_footings, body_loads,
-                            surface_loads, structures,      inertia};
+constexpr Maker makers[] = {
+    contacts,      material_points, fem_region, empty_cells,   sparse_node_springs, ghost_penalty,
+    point_motions, rigid_footings,  body_loads, surface_loads, structures,          inertia};
 
 }  // namespace
 

@@ -296,8 +296,9 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
   if (root.is_null()) root.fail(fmt::format("the model file is empty; expected {}", sections));
   if (!root.is_map())
     root.fail(fmt::format("expected a map of sections ({}), found {}", sections, root.describe()));
-  const yaml::Map top = root.map({"title", "analysis", "mesh", "materials", "bodies", "point_sets",
-                                  "node_sets", "structures", "phases", "output", "numerics"});
+  const yaml::Map top =
+      root.map({"title", "analysis", "mesh", "regions", "materials", "bodies", "point_sets",
+                "node_sets", "structures", "phases", "output", "numerics"});
 
   spec::Model model;
   model.file = file_name;
@@ -310,6 +311,7 @@ spec::Model read_model_from_string(const std::string& text, const std::string& f
   context.kinematics = model.kinematics;
   context.dimension = spatial_dimension(model.kinematics);
   model.mesh = read_mesh(top.required("mesh"), model.directory, context);
+  if (auto regions = top.find_non_empty("regions")) model.regions = read_regions(*regions, context);
   model.materials = read_materials(top.required("materials"), context);
   model.bodies = read_bodies(top.required("bodies"), context);
   if (auto point_sets = top.find_non_empty("point_sets"))

@@ -16,8 +16,9 @@ const std::vector<std::string> engine_columns = {"time", "step"};
 
 const std::vector<std::string> vector_quantities = {"reaction", "displacement", "velocity",
                                                     "position", "load"};
-const std::vector<std::string> scalar_quantities = {"kinetic_energy", "strain_energy",
-                                                    "newton_iterations", "time_step"};
+const std::vector<std::string> scalar_quantities = {
+    "kinetic_energy", "strain_energy",       "newton_iterations",
+    "time_step",      "mesh_smallest_angle", "mesh_largest_aspect_ratio"};
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();

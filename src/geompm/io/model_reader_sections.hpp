@@ -42,6 +42,8 @@ struct Context {
 
 // Sections, in file order.
 spec::Mesh read_mesh(const yaml::Node& node, const std::string& model_directory, Context& context);
+/// The kinds of the mesh's cells (model_reader_regions.cpp).
+std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context& context);
 std::vector<spec::Material> read_materials(const yaml::Node& node, Context& context);
 spec::Region read_region(const yaml::Node& node, const Context& context);
 /// A body's `initial_stress` (model_reader_initial_stress.cpp).

@@ -99,6 +99,9 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
         }
     frontier.swap(next);
   }
+  // FEM cells take part in every step, with or without points near them (docs/theory.md §19).
+  for (Index c = 0; c < n_cells; ++c)
+    if (fem_cell(c)) is_active[c] = 1;
   active_cells_.clear();
   for (Index c = 0; c < n_cells; ++c)
     if (is_active[c]) active_cells_.push_back(c);
@@ -153,7 +156,7 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       if (is_mixed(points, p)) occupied_mixed += points.volume[p];
     }
     const double measure = cell_measure(mesh_, c, radial);
-    cell_fill_[ci] = std::min(1.0, occupied / measure);
+    cell_fill_[ci] = fem_cell(c) ? 1.0 : std::min(1.0, occupied / measure);
     cell_mixed_fill_[ci] = std::min(1.0, occupied_mixed / measure);
     const double size = std::pow(cell_measure(mesh_, c, false), 1.0 / dim);
     for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;

@@ -60,6 +60,9 @@ struct GridSettings {
   /// least-squares fit where it was well supported (theory eq. 11.11), rather than from the
   /// points' pressures (eq. 11.6).
   bool fitted_pressure_start = false;
+  /// Per mesh cell: 1 if it is an FEM cell (docs/theory.md §19), empty if none is. FEM cells are
+  /// always active and count as full: their Gauss points (coupling/) fill them.
+  std::vector<char> fem_cells;
 };
 
 /// The nodes a place of a point's domain moves with and their weights: W_a = N_a + grad N_a .
@@ -109,6 +112,8 @@ class GridSystem {
   const std::vector<Index>& active_nodes() const { return active_nodes_; }
   const std::vector<Index>& node_to_active() const { return node_to_active_; }
   const std::vector<Index>& active_cells() const { return active_cells_; }
+  /// Whether mesh cell c is an FEM cell (settings().fem_cells).
+  bool fem_cell(Index c) const { return !settings_.fem_cells.empty() && settings_.fem_cells[c]; }
   /// The active cells in groups no two cells of which share a node (positions in active_cells).
   const std::vector<std::vector<Index>>& colours() const { return colours_; }
   /// The points of active cell ci (points are sorted by cell): [begin, end).

@@ -33,6 +33,7 @@ std::vector<NodeBlock> springs_typed(const GridSystem& grid, const MaterialPoint
       const Index na = grid.node_to_active()[nodes[a]];
       covered[na] += share;
       spring_share[na] += spring;
+      if (grid.fem_cell(c)) seen[na] += share;  // an FEM cell's Gauss points fill it
       for (Index p = grid.cell_point_begin(ci); p < grid.cell_point_end(ci); ++p)
         seen[na] += grid.cell_shape(p)[a] * points.volume[p];
     }

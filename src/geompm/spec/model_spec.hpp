@@ -12,6 +12,7 @@
 
 #include "geompm/core/error.hpp"
 #include "geompm/core/types.hpp"
+#include "geompm/mesh/cell_kind.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 
 namespace geompm::spec {
@@ -47,6 +48,16 @@ struct Region {
   std::vector<Vec3> polygon;   // Polygon (2D), counter-clockwise or clockwise
   Vec3 center = Vec3::Zero();  // Circle (2D) or sphere (3D)
   double radius = 0.0;
+  SourceLocation source;
+};
+
+/// A region of the background mesh of one kind (docs/user-guide.md, "regions"): the cells of a
+/// cell group, or those whose centroid lies in a geometric region, are MPM, FEM or buffer cells.
+/// Cells no region names are MPM cells.
+struct MeshRegion {
+  std::string name;
+  CellKind kind = CellKind::Mpm;
+  Region region;
   SourceLocation source;
 };
 
@@ -397,6 +408,7 @@ struct Model {
   std::string title;
   Kinematics kinematics = Kinematics::PlaneStrain;
   Mesh mesh;
+  std::vector<MeshRegion> regions;  // kinds of the mesh's cells (none: every cell MPM)
   std::vector<Material> materials;
   std::vector<Body> bodies;
   std::vector<PointSet> point_sets;

@@ -5,42 +5,32 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
-#include "geompm/physics/point_kernel.hpp"
+#include "geompm/physics/gauss_cell.hpp"
 
 namespace geompm {
 
 namespace {
 
-// The Gauss points of one cell on the configuration at the start of the step (row a of X = node
-// a): internal force sum_q v_q B^T sigma and tangent sum_q v_q B^T a B at the cell's nodal
-// increments du (row a = node a) — the material points' kernel (theory eqs. 3.9, 17.12) with the
-// Gauss point's volume v_q = w_q det J (r in axisymmetry) in place of a point's.
+// The Gauss points of one cell (physics/gauss_cell.hpp) with the structure's material and the
+// states its Gauss points carry.
 template <class E>
 bool integrate_cell(const DeformableStructure& s, Index c,
                     const Eigen::Matrix<double, E::nodes, E::dim>& X,
                     const Eigen::Matrix<double, E::nodes, E::dim>& du, bool want_tangent,
                     PointKernelResult<E>& cell, GaussPointState* states) {
-  const bool axisymmetric = s.kinematics() == Kinematics::Axisymmetric;
-  cell.internal_force.setZero();
-  if (want_tangent) cell.stiffness.setZero();
-  PointKernelResult<E> r;
-  for (int q = 0; q < E::quadrature_size(); ++q) {
-    const typename E::Local xi = E::quadrature_point(q);
-    const PointStencil<E> stencil = make_stencil<E>(X, xi);
-    const Eigen::Matrix<double, E::dim, E::dim> J = X.transpose() * E::shape_gradients(xi);
-    const GaussPointState& g = s.gauss_points()[c * E::quadrature_size() + q];
-    PointStartState p{&s.material(), Vec3::Zero(), 0.0, g.F, g.be, g.internal};
-    p.position.template head<E::dim>() = X.transpose() * stencil.N;
-    p.volume = E::quadrature_weight(q) * J.determinant() * (axisymmetric ? p.position.x() : 1.0);
-    if (!integrate_point<E::nodes, E::dim>(stencil, p, du, axisymmetric, want_tangent, r))
-      return false;
-    cell.internal_force += r.internal_force;
-    if (want_tangent) cell.stiffness += r.stiffness;
-    if (states)
-      states[q] = {r.state.deformation_gradient, r.state.elastic_left_cauchy_green,
-                   r.state.internal, r.state.cauchy_stress};
-  }
-  return true;
+  const GaussPointState* start = s.gauss_points().data() + c * E::quadrature_size();
+  return integrate_gauss_cell<E>(
+      X, du, s.kinematics() == Kinematics::Axisymmetric, want_tangent, false,
+      [&](int q) {
+        return PointStartState{&s.material(), Vec3::Zero(), 0.0,
+                               start[q].F,    start[q].be,  start[q].internal};
+      },
+      cell,
+      [&](int q, const PointKernelResult<E>& r) {
+        if (states)
+          states[q] = {r.state.deformation_gradient, r.state.elastic_left_cauchy_green,
+                       r.state.internal, r.state.cauchy_stress};
+      });
 }
 
 }  // namespace
@@ -105,13 +95,7 @@ bool DeformableStructureTerm::add_cells(const Vector& du, SystemForces* forces,
         }
       GaussPointState* out = states ? states->data() + c * E::quadrature_size() : nullptr;
       if (!integrate_cell<E>(structure_, c, X, u, tangent != nullptr, cell, out)) return false;
-      if (forces)
-        for (int k = 0; k < n; ++k) forces->internal(dofs[k]) += cell.internal_force(k);
-      if (tangent)
-        for (int k = 0; k < n; ++k)
-          for (int l = 0; l < n; ++l)
-            if (cell.stiffness(k, l) != 0.0)
-              add_to_tangent(*tangent, dofs_, dofs[k], dofs[l], cell.stiffness(k, l));
+      scatter_cell<E>(cell, dofs, dofs_, forces ? &forces->internal : nullptr, tangent);
     }
     return true;
   });

@@ -1,0 +1,64 @@
+// The FEM region of the background mesh (seed §3.4, docs/theory.md §19): its cells are ordinary
+// updated-Lagrangian finite elements. Each carries material points at its Gauss points, in a
+// store of their own (MaterialPoints: the same state as a soil point, so that the same materials,
+// kernels and outputs apply), and its nodes move with the solution, never reset: the
+// configuration a step converges to is the reference of the next. The grid's displacement
+// unknowns at the nodes it shares with MPM cells are the same unknowns: one system.
+#pragma once
+
+#include <vector>
+
+#include "geompm/mesh/cell_kind.hpp"
+#include "geompm/mesh/mesh.hpp"
+#include "geompm/points/material_points.hpp"
+
+namespace geompm {
+
+class FemRegion {
+ public:
+  /// The FEM cells of `mesh` by `kinds` (per cell); the mesh's positions now are its initial
+  /// configuration.
+  FemRegion(const Mesh& mesh, const std::vector<CellKind>& kinds);
+
+  /// The FEM cells, ascending.
+  const std::vector<Index>& cells() const { return cells_; }
+  /// Per mesh cell: 1 if FEM.
+  const std::vector<char>& fem_cell() const { return fem_cell_; }
+  /// Per mesh node: 1 if a node of an FEM cell (it moves with the solution).
+  const std::vector<char>& fem_node() const { return fem_node_; }
+  /// Per mesh cell, its kind.
+  const std::vector<CellKind>& kinds() const { return kinds_; }
+  /// Gauss points per cell (the cell type's rule).
+  int points_per_cell() const { return points_per_cell_; }
+  /// The Gauss points: entry k * points_per_cell() + q is Gauss point q of cells()[k]; `cell`
+  /// is the mesh cell and `local` the quadrature point's reference coordinates, fixed.
+  MaterialPoints& gauss_points() { return gauss_; }
+  const MaterialPoints& gauss_points() const { return gauss_; }
+  /// The mesh's node positions at the start of the analysis.
+  const std::vector<Vec3>& initial_nodes() const { return initial_nodes_; }
+
+  /// Moves the FEM nodes by their converged increment (updated Lagrangian, never reset):
+  /// nodal(node) the increment of mesh node `node`.
+  template <class Increment>
+  void move_nodes(Mesh& mesh, Increment&& nodal) const {
+    for (Index a = 0; a < mesh.num_nodes(); ++a)
+      if (fem_node_[a]) mesh.nodes[a] += nodal(a);
+  }
+
+ private:
+  std::vector<CellKind> kinds_;
+  std::vector<Index> cells_;
+  std::vector<char> fem_cell_, fem_node_;
+  int points_per_cell_ = 0;
+  MaterialPoints gauss_;
+  std::vector<Vec3> initial_nodes_;
+};
+
+/// The Gauss points of FEM cell c (positions and volumes in the mesh's configuration, times r
+/// per radian in axisymmetry): f(q, xi, x, volume).
+template <class F>
+void for_each_gauss_point(const Mesh& mesh, Index c, bool axisymmetric, F&& f);
+
+}  // namespace geompm
+
+#include "geompm/coupling/fem_region_gauss.hpp"

@@ -1,0 +1,49 @@
+// The FEM region's terms in a step (seed §3.4, docs/theory.md §19): the internal force and
+// consistent tangent of its Gauss points (physics/gauss_cell.hpp, the material points' kernel on
+// the cells' configuration at the start of the step, eqs. 19.2-19.3) and their self-weight under
+// the phase's gravity (f_ext, eq. 19.4), on the grid's displacement unknowns: a node an FEM cell
+// shares with an MPM cell is one unknown of one monolithic system. At the converged step it
+// writes the Gauss points' new states into the region's store; the nodes are moved by the step
+// (analysis/step.cpp), before the points are relocated.
+#pragma once
+
+#include <vector>
+
+#include "geompm/coupling/fem_region.hpp"
+#include "geompm/physics/contribution.hpp"
+#include "geompm/physics/grid_system.hpp"
+
+namespace geompm {
+
+class FemRegionTerm final : public Contribution {
+ public:
+  /// `gravity` at the end of the step. Every node of the region's cells must be active in
+  /// `grid` (GridSystem activates FEM cells).
+  FemRegionTerm(FemRegion& region, const GridSystem& grid, const DofMap& dofs, const Vec3& gravity);
+  const char* name() const override { return "fem region"; }
+  void declare_couplings(SparsityBuilder& pattern) const override;
+  bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
+  void report(const Vector& du, Reactions& reactions) override;
+  void commit() override;
+
+  /// Writes into the region's Gauss points the state at `du` (every unknown of the step): stress,
+  /// F, b_e, internal variables, position and volume. False where a point is inadmissible.
+  bool commit_state(const Vector& du);
+
+ private:
+  // Adds the cells' internal forces (and tangent) at du; writes the states if `commit`.
+  bool add_cells(const Vector& du, SystemForces* forces, SparseMatrix* tangent, bool commit);
+
+  FemRegion& region_;
+  const GridSystem& grid_;
+  const DofMap& dofs_;
+  int cell_size_ = 0;             // unknowns per cell
+  std::vector<Index> cell_dofs_;  // per FEM cell: its nodes' displacement unknowns, node-major
+  std::vector<double> X_;         // per FEM cell: its nodes' positions at the step's start
+  std::vector<char> averaged_;    // per FEM cell: its material takes the cell's volume average
+  Vector applied_;                // self-weight per entry of cell_dofs_
+  Vector converged_;
+  bool reported_ = false;
+};
+
+}  // namespace geompm
