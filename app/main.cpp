@@ -27,6 +27,7 @@
 #include "geompm/io/plot.hpp"
 #include "geompm/mesh/cell_type.hpp"
 #include "geompm/mesh/gmsh_generate.hpp"
+#include "geompm/solver/linear_solver.hpp"
 
 namespace {
 
@@ -36,13 +37,31 @@ struct RunCommand {
   bool quiet = false;
   bool resume = false;
   std::optional<int> checkpoint_every;
+  std::string linear_solver, petsc_options;
 };
+
+// --linear-solver and --petsc-options over the model's numerics (docs/user-guide.md, "Linear
+// solvers").
+void override_linear_solver(const RunCommand& command, geompm::spec::Numerics& numerics) {
+  if (!command.linear_solver.empty()) numerics.linear_solver = command.linear_solver;
+  if (!command.petsc_options.empty()) {
+    if (const std::string error = geompm::petsc_options_error(command.petsc_options);
+        !error.empty())
+      throw geompm::InputError("--petsc-options: " + error);
+    if (!geompm::uses_petsc(numerics.linear_solver))
+      throw geompm::InputError("--petsc-options: no effect with linear solver '" +
+                               numerics.linear_solver +
+                               "' (expected auto, petsc_gamg, petsc_hypre or petsc_mumps)");
+    numerics.petsc_options = command.petsc_options;
+  }
+}
 
 int run_command(const RunCommand& command) {
   if (command.threads > 0) omp_set_num_threads(command.threads);
   geompm::install_interrupt_handler();  // Ctrl-C: the run stops cleanly between steps (exit 3)
   // Read and build everything before anything is written, so bad input leaves no output.
-  const auto spec = geompm::read_model(command.model_file);
+  auto spec = geompm::read_model(command.model_file);
+  override_linear_solver(command, spec.numerics);
   auto model = geompm::build_model(spec);
   std::string output = command.output;
   if (output.empty())
@@ -138,6 +157,12 @@ CLI::App* add_run_command(CLI::App& app, RunCommand& options) {
                   "output.checkpoint.every_steps of the model, 100)")
       ->type_name("STEPS")
       ->check(CLI::Range(0, 1000000000).description("a whole number >= 0"));
+  run->add_option("--linear-solver", options.linear_solver,
+                  "linear solver, over the model's numerics.linear_solver")
+      ->check(CLI::IsMember(geompm::linear_solver_names()));
+  run->add_option("--petsc-options", options.petsc_options,
+                  "PETSc options for the PETSc solvers, over the model's numerics.petsc_options "
+                  "(e.g. \"-ksp_type fgmres -pc_gamg_threshold 0.02\")");
   return run;
 }
 

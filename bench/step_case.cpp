@@ -208,10 +208,10 @@ int StepCase::full_step() {
     step_linear_solver_ = create_linear_solver(model_->spec.numerics.linear_solver);
     step_ = std::make_unique<StepSolver>(*model_, *step_linear_solver_);
   }
-  const StepResult result = step_->advance(*phase_, 0.0, 1.0);
-  if (!result.converged)
-    throw std::runtime_error("benchmark step did not converge: " + result.newton.failure);
-  return result.newton.iterations;
+  last_step_ = step_->advance(*phase_, 0.0, 1.0);
+  if (!last_step_.converged)
+    throw std::runtime_error("benchmark step did not converge: " + last_step_.newton.failure);
+  return last_step_.newton.iterations;
 }
 
 void StepCase::save_points() {

@@ -86,6 +86,8 @@ class StepCase {
   /// A whole step, StepSolver::advance, from the current points. Returns the number of linear
   /// solves (Newton iterations).
   int full_step();
+  /// What the last full_step() returned (Newton's iterations, linear iterations and seconds).
+  const StepResult& last_step() const { return last_step_; }
   /// Saves the material points (once), so that restore_points() can start every timed step from
   /// the same state; the copy costs as much memory as the points themselves.
   void save_points();
@@ -116,6 +118,7 @@ class StepCase {
   std::unique_ptr<Model> model_;
   std::unique_ptr<PhaseContext> phase_;
   StageMemory memory_;
+  StepResult last_step_;
 
   // Stage by stage.
   std::unique_ptr<testing::GridHarness> grid_;

@@ -7,6 +7,8 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev          # small dense tensors and the sparse matrix type
   libsuitesparse-dev     # UMFPACK sparse direct solver
+  libpetsc-real-dev      # Krylov solvers with GAMG, hypre BoomerAMG and MUMPS for large models (issue 44);
+                         # brings OpenMPI
   libopenblas0-openmp    # optimised BLAS under UMFPACK (x2.5-7 on the factorisation, docs/performance.md);
                          # the OpenMP build shares our threads instead of spinning its own
   libyaml-cpp-dev        # model files (YAML, with line numbers for errors)

@@ -63,6 +63,10 @@ nlohmann::ordered_json newton_json(int total, int most) {
   return {{"total", total}, {"most_in_a_step", most}};
 }
 
+nlohmann::ordered_json linear_json(std::int64_t iterations, double seconds) {
+  return {{"iterations", iterations}, {"seconds", seconds}};
+}
+
 }  // namespace
 
 void write_summary_json(const std::filesystem::path& file, const RunSummary& summary) {
@@ -77,6 +81,8 @@ void write_summary_json(const std::filesystem::path& file, const RunSummary& sum
   json["steps"] = summary.steps;
   json["cutbacks"] = summary.cutbacks;
   json["newton_iterations"] = newton_json(summary.iterations, summary.max_iterations_in_a_step);
+  json["linear_solver"] = summary.linear_solver;
+  json["linear_solves"] = linear_json(summary.linear_iterations, summary.linear_seconds);
   json["wall_seconds"] = summary.wall_seconds;
   json["lost_points"] = summary.lost_points;
   json["lost_mass"] = summary.lost_mass;
@@ -92,6 +98,7 @@ void write_summary_json(const std::filesystem::path& file, const RunSummary& sum
                       {"steps", p.steps},
                       {"cutbacks", p.cutbacks},
                       {"newton_iterations", newton_json(p.iterations, p.max_iterations_in_a_step)},
+                      {"linear_solves", linear_json(p.linear_iterations, p.linear_seconds)},
                       {"wall_seconds", p.wall_seconds}});
   json["phases"] = phases;
   // The last value of each history column; a non-finite value (never expected) becomes null.

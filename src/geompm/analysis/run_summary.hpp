@@ -23,6 +23,11 @@ struct PhaseSummary {
   int iterations = 0;  // Newton iterations of the converged steps
   int max_iterations_in_a_step = 0;
   double wall_seconds = 0.0;
+  /// The linear solver's work in the converged steps (NewtonResult): iterations (Krylov, or 1 a
+  /// solve for a direct solver) and wall seconds in setup and solves. Not in checkpoints: a
+  /// resumed run counts them from its resumption.
+  std::int64_t linear_iterations = 0;
+  double linear_seconds = 0.0;
 };
 
 /// A material point that left the mesh and was removed (numerics.lost_points: remove): its id,
@@ -42,6 +47,9 @@ struct RunSummary {
   int iterations = 0;
   int cutbacks = 0;
   int max_iterations_in_a_step = 0;
+  std::int64_t linear_iterations = 0;  // as PhaseSummary's, for the whole run
+  double linear_seconds = 0.0;
+  std::string linear_solver;  // numerics.linear_solver (or --linear-solver)
   std::vector<std::vector<double>> residual_histories;  // per converged step
   std::filesystem::path history_file;
 

@@ -40,7 +40,9 @@ StepControlSettings step_control_settings(const spec::TimeStepping& ts) {
 Simulation::Simulation(Model& model, const RunOptions& options)
     : model_(model),
       options_(options),
-      solver_(create_linear_solver(model.spec.numerics.linear_solver)),
+      solver_(create_linear_solver(
+          model.spec.numerics.linear_solver,
+          {model.spec.numerics.petsc_options, model.spec.numerics.direct_limit})),
       stepper_(model, *solver_),
       progress_(options.log, options.progress),
       started_(Clock::now()),
@@ -48,6 +50,7 @@ Simulation::Simulation(Model& model, const RunOptions& options)
       last_checkpoint_(started_),
       kill_in_checkpoint_(kill_in_checkpoint()) {
   summary_.model_file = model.spec.file;
+  summary_.linear_solver = model.spec.numerics.linear_solver;
   summary_.model_hash = options.model_hash;
   for (const auto& phase : model.spec.phases) summary_.phases.push_back({.name = phase.name});
 }
@@ -214,6 +217,10 @@ void Simulation::accept(const StepResult& step, double dt) {
   summary_.max_iterations_in_a_step = std::max(summary_.max_iterations_in_a_step, iterations);
   phase.max_iterations_in_a_step = std::max(phase.max_iterations_in_a_step, iterations);
   summary_.residual_histories.push_back(step.newton.residuals);
+  summary_.linear_iterations += step.newton.linear_iterations;
+  phase.linear_iterations += step.newton.linear_iterations;
+  summary_.linear_seconds += step.newton.linear_seconds;
+  phase.linear_seconds += step.newton.linear_seconds;
 
   const bool phase_done = control_->finished();
   const int vtk_every = model_.spec.output.vtk_every;
@@ -232,9 +239,10 @@ void Simulation::accept(const StepResult& step, double dt) {
                                                            step.mesh_quality->largest_aspect_ratio)
                                              : std::string();
   progress_.update(
-      fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | "
+      fmt::format("phase {} | step {} | t {:.4g}/{:.4g} | dt {:.3g} | it {} | lin {} in {:.2f} s | "
                   "r {:.2e}{} | ETA {}",
                   spec.name, step_number_, control_->time(), spec.duration, dt, iterations,
+                  step.newton.linear_iterations, step.newton.linear_seconds,
                   step.newton.residuals.back(), mesh, format_duration(eta)));
   checkpoint_if_due(phase_done);
 }

@@ -229,6 +229,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   second.halvings += failed.halvings;
   second.searches += failed.searches;
   second.linear_iterations += failed.linear_iterations;
+  second.linear_seconds += failed.linear_seconds;
   put_in_front(second.residuals, failed.residuals, n);
   put_in_front(second.largest, failed.largest, n);
   put_in_front(second.active, failed.active, n);

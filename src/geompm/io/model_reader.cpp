@@ -173,12 +173,39 @@ std::vector<spec::Material> read_materials(const yaml::Node& node, Context& cont
   return materials;
 }
 
+// numerics.linear_solver and what the PETSc solvers read besides (docs/user-guide.md, "Linear
+// solvers").
+void read_linear_solver(const yaml::Map& section, spec::Numerics& numerics) {
+  if (auto solver = section.find("linear_solver"))
+    numerics.linear_solver = solver->choice(linear_solver_names());
+  if (auto options = section.find("petsc_options")) {
+    numerics.petsc_options = options->text();
+    if (const std::string error = petsc_options_error(numerics.petsc_options); !error.empty())
+      options->fail(error);
+    if (!uses_petsc(numerics.linear_solver))
+      options->fail(
+          fmt::format("has no effect with linear_solver: {} (expected a PETSc solver: "
+                      "auto, petsc_gamg, petsc_hypre or petsc_mumps)",
+                      numerics.linear_solver));
+  }
+  if (auto limit = section.find("direct_limit")) {
+    numerics.direct_limit = limit->integer();
+    if (numerics.direct_limit < 0)
+      limit->fail(
+          fmt::format("expected a number of unknowns >= 0, found {}", numerics.direct_limit));
+    if (numerics.linear_solver != "auto")
+      limit->fail(
+          "has no effect without linear_solver: auto (the size below which it picks the "
+          "direct solver)");
+  }
+}
+
 spec::Numerics read_numerics(const yaml::Node& node) {
   const yaml::Map section = node.map(
       {"interpolation", "formulation", "empty_cell_stiffness", "buffer_layers", "lost_points",
        "linear_solver", "mixed_volume", "mixed_material_pressure", "mixed_pressure_equation",
        "pressure_stabilisation_floor", "mixed_pressure_start", "sparse_node_stiffness",
-       "sparse_node_fill", "ghost_penalty", "ghost_penalty_fill"});
+       "sparse_node_fill", "ghost_penalty", "ghost_penalty_fill", "petsc_options", "direct_limit"});
   spec::Numerics numerics;
   if (auto formulation = section.find("formulation"))
     numerics.formulation = read_formulation(*formulation);
@@ -242,8 +269,7 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   }
   if (auto start = section.find("mixed_pressure_start"))
     numerics.fitted_pressure_start = start->choice({"points", "fitted"}) == "fitted";
-  if (auto solver = section.find("linear_solver"))
-    numerics.linear_solver = solver->choice(linear_solver_names());
+  read_linear_solver(section, numerics);
   return numerics;
 }
 

@@ -78,10 +78,33 @@ class LinearSolver {
   virtual const char* name() const = 0;
 };
 
-/// A registered solver by name: "umfpack" (SuiteSparse sparse direct LU; the default) or
-/// "sparse_lu" (Eigen's own, no external dependency). Throws std::invalid_argument listing the
-/// known names.
-std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name);
+/// The unknowns below which `auto` picks the direct solver (UMFPACK) and from which AMG
+/// (petsc_hypre). On the 2D elastic block of bench/ UMFPACK's step was as fast as or faster than
+/// AMG's at every size measured, 10^4 to 10^6 points; at 10^6 points (5·10^5 unknowns) the two
+/// took the same linear-solver time (docs/performance.md, note 17). The limit is that size: AMG
+/// where it no longer costs time, and saves memory (a fifth of a step's peak).
+inline constexpr Index default_direct_limit = 500000;
+
+/// What a solver may be told besides its name (numerics.linear_solver of the model file, or the
+/// command line's --linear-solver and --petsc-options).
+struct LinearSolverOptions {
+  /// PETSc options for experts, in PETSc's command-line syntax ("-ksp_type fgmres"); they override
+  /// the PETSc solvers' own choices.
+  std::string petsc_options;
+  /// `auto`: the direct solver below this many unknowns, AMG from it on.
+  Index direct_limit = default_direct_limit;
+};
+
+/// A registered solver by name: "umfpack" (SuiteSparse sparse direct LU; the default),
+/// "sparse_lu" (Eigen's own, no external dependency), "auto" (umfpack or petsc_hypre by size),
+/// "petsc_gamg", "petsc_hypre", "petsc_mumps" (petsc_solver.hpp). Throws std::invalid_argument
+/// listing the known names.
+std::unique_ptr<LinearSolver> create_linear_solver(const std::string& name,
+                                                   const LinearSolverOptions& options = {});
+/// Whether the named solver is one of PETSc's (or may be: auto), i.e. reads petsc_options.
+bool uses_petsc(const std::string& name);
+/// Empty if `options` reads as PETSc options ("-key [value] ..."), else what is wrong.
+std::string petsc_options_error(const std::string& options);
 /// The registered names, the default first (for error messages and the model reader).
 std::vector<std::string> linear_solver_names();
 

@@ -22,6 +22,7 @@ struct NewtonResult {
   int halvings = 0;                 // corrections halved by the backtracking
   int searches = 0;                 // corrections shortened by the energy line search
   int linear_iterations = 0;        // the linear solver's, summed (1 a solve for a direct one)
+  double linear_seconds = 0.0;      // wall time in the linear solver's setup and solves
   std::vector<double> residuals;    // relative residual before each solve, and the last
   std::vector<double> corrections;  // relative size of each correction
   /// Per correction: the fraction of it kept, 1 for the full Newton correction, below 1 where the

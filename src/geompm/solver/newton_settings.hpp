@@ -3,6 +3,8 @@
 // line search.
 #pragma once
 
+#include "geompm/solver/forcing_term.hpp"
+
 namespace geompm {
 
 /// A residual this much smaller than the one before marks Newton's superlinear (quadratic) regime:
@@ -37,6 +39,9 @@ struct NewtonSettings {
   /// solves exactly and ignores it): well below the Newton tolerances, so that Newton's
   /// quadratic convergence is not lost to the linear solve.
   double linear_tolerance = 1e-10;
+  /// Inexact Newton (forcing_term.hpp): an iterative solver's tolerance per iteration, from
+  /// forcing.maximum down to linear_tolerance as Newton converges.
+  ForcingSettings forcing;
 };
 
 }  // namespace geompm

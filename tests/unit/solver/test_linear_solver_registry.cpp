@@ -100,14 +100,25 @@ TEST(LinearSolverRegistry, ASingularMatrixIsAFailureNotAnAnswer) {
 
 TEST(LinearSolverRegistry, AnUnknownNameListsTheKnownOnes) {
   try {
-    create_linear_solver("petsc_gamg");
+    create_linear_solver("superlu_dist");
     FAIL() << "an unknown name was accepted";
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("'petsc_gamg'"), std::string::npos) << message;
+    EXPECT_NE(message.find("'superlu_dist'"), std::string::npos) << message;
     for (const std::string& name : linear_solver_names())
       EXPECT_NE(message.find(name), std::string::npos) << message;
   }
+}
+
+TEST(LinearSolverRegistry, KnowsWhichSolversReadPetscOptionsAndTheirSyntax) {
+  EXPECT_FALSE(uses_petsc("umfpack"));
+  EXPECT_TRUE(uses_petsc("auto"));
+  EXPECT_TRUE(uses_petsc("petsc_gamg"));
+  EXPECT_THROW(uses_petsc("superlu_dist"), std::invalid_argument);
+  EXPECT_EQ(petsc_options_error("-ksp_type fgmres -pc_gamg_threshold -0.1 -ksp_view"), "");
+  EXPECT_EQ(petsc_options_error(""), "");
+  EXPECT_NE(petsc_options_error("ksp_type gmres"), "");      // no dash
+  EXPECT_NE(petsc_options_error("-ksp_type gmres cg"), "");  // two values
 }
 
 }  // namespace
