@@ -70,7 +70,8 @@ void point_motions(StepSystem& system, StepContext& c) {
       if (!(points.sets[p] >> motion.set & 1u)) continue;
       const double h = c.grid.cell_size(p);
       // Stiffness far above the point's own: k = alpha E V / h^2 with alpha = spring_ratio.
-      targets.stiffness[p] = spring_ratio * c.model.materials[points.material[p]]->reference_modulus() *
+      targets.stiffness[p] = spring_ratio *
+                             c.model.materials[points.material[p]]->reference_modulus() *
                              points.volume[p] / (h * h);
       for (int i = 0; i < c.grid.dim(); ++i)
         if (!std::isnan(increment(i))) {

@@ -260,8 +260,8 @@ struct TimeStepping {
   double initial = 0.0;
   double min = 0.0;
   double max = 0.0;
-  double growth = 1.5;   // factor after an easy step
-  double cutback = 0.5;  // factor after a failed step
+  double growth = 1.5;      // factor after an easy step
+  double cutback = 0.5;     // factor after a failed step
   int easy_iterations = 4;  // a step with at most this many iterations is easy
 };
 
