@@ -183,7 +183,7 @@ std::string out_of_balance(const DofMap& dofs, const Mesh& mesh, Index dof, doub
 bool starts_from_rest(const spec::Model& model, const spec::Phase& phase, double t0) {
   if (t0 != 0.0) return false;
   const auto index = &phase - model.phases.data();  // the phase is one of the model's
-  return index <= 0 || index > std::ssize(model.phases) ||
+  return index <= 0 || index >= std::ssize(model.phases) ||
          model.phases[std::size_t(index) - 1].dynamics.quasi_static;
 }
 
