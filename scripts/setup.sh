@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Installs everything geompm needs on Debian 12 (idempotent, non-interactive).
-#   bash scripts/setup.sh            build, tests and examples
-#   bash scripts/setup.sh --report   and what scripts/validation_report.py needs for its plots
+#   bash scripts/setup.sh            build, tests, examples and the validation report's runner
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
@@ -20,12 +19,11 @@ packages=(
   libgd-dev              # PNG plots of histories
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-meshio         # independent VTU reader used by the output test
+  python3-yaml           # the validation cases' model overrides (scripts/validation/run_cases.py)
 )
-case "${1:-}" in
-  --report) packages+=(python3-matplotlib) ;;  # the plots of docs/validation.md
-  "") ;;
-  *) echo "setup.sh: unknown option '$1' (expected --report or nothing)" >&2; exit 1 ;;
-esac
+if [ $# -gt 0 ]; then
+  echo "setup.sh: takes no options (got '$1')" >&2; exit 1
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

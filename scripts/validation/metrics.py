@@ -51,9 +51,33 @@ def richardson(values, ratio=2.0):
     return order, f3 - d2 / (ratio ** order - 1)
 
 
+def period(ts, vs):
+    """Period of an oscillation from the zero crossings of v(t) (linear between the rows): twice
+    the mean time between crossings; None with fewer than three crossings."""
+    crossings = [ts[k - 1] + (ts[k] - ts[k - 1]) * vs[k - 1] / (vs[k - 1] - vs[k])
+                 for k in range(1, len(ts)) if vs[k - 1] * vs[k] < 0]
+    if len(crossings) < 3:
+        return None
+    return 2 * (crossings[-1] - crossings[0]) / (len(crossings) - 1)
+
+
+def relative_rise(xs, ys, lo, hi):
+    """(y(hi) - y(lo)) / |y(lo)|: how much a load still rises over a window (a limit load: ~0)."""
+    a, b = value_at(xs, ys, lo), value_at(xs, ys, hi)
+    return None if a is None or b is None else (b - a) / abs(a)
+
+
+def largest_change(values, pairs):
+    """Largest |a - b| / |b| over pairs of named values (e.g. the same run at two nu)."""
+    changes = [abs(values[a] - values[b]) / abs(values[b]) for a, b in pairs
+               if values.get(a) is not None and values.get(b) is not None]
+    return max(changes) if len(changes) == len(pairs) else None
+
+
 def verdict(value, tolerance, reference):
     """'pass' when value lies within the tolerance: {"band": [lo, hi]} absolute, or
-    {"relative": r} about the reference, or {"max": m}; 'not reached' otherwise or without a value."""
+    {"relative": r} about the reference, {"above": r} from the reference to (1 + r) times it, or
+    {"max": m}; 'not reached' otherwise or without a value."""
     if value is None:
         return "not reached"
     if "band" in tolerance:
@@ -61,9 +85,27 @@ def verdict(value, tolerance, reference):
         ok = lo <= value <= hi
     elif "relative" in tolerance:
         ok = abs(value - reference) <= tolerance["relative"] * abs(reference)
+    elif "above" in tolerance:
+        ok = reference <= value <= (1 + tolerance["above"]) * reference
     else:
         ok = value <= tolerance["max"]
     return "pass" if ok else "not reached"
+
+
+def combine(case, values):
+    """The case's numbers from its runs' values: {"run": value} each on its own (the default), or
+    one number: the largest change over `pairs`, or the extrapolation of three runs (`order`)."""
+    how = case.get("combine", "each")
+    if how == "each":
+        return values
+    if how == "largest_change":
+        return {"largest change": largest_change(values, case["pairs"])}
+    if how == "extrapolate":
+        ordered = [values.get(name) for name in case["order"]]
+        if None in ordered:
+            return {"extrapolated": None}
+        return {"extrapolated": richardson(ordered, case.get("ratio", 2.0))[1]}
+    raise ValueError(f"unknown combine {how!r}")
 
 
 def evaluate(metric, history):
@@ -78,4 +120,10 @@ def evaluate(metric, history):
         return value_at(x, y, metric["at"])
     if kind == "mean_over":
         return mean_over(x, y, *metric["over"])
+    if kind == "rise":
+        return relative_rise(x, y, *metric["over"])
+    if kind == "period":
+        return period(x, y)
+    if kind == "last":
+        return y[-1] if y else None
     raise ValueError(f"unknown metric kind {kind!r}")

@@ -1,6 +1,6 @@
 // Shared by the strip-footing tests on cohesionless Mohr-Coulomb soil (docs/validation.md §9):
-// the reference values, the examples' models refined as scripts/validation_report.py refines
-// them, and the push phase of a run that may stop early.
+// the reference values, the examples' models refined for the convergence studies of
+// docs/validation.md, and the push phase of a run that may stop early.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ inline constexpr double kNgammaRough = 14.75;
 inline constexpr double kNgammaSmooth = 7.65;
 
 // The examples' model without VTK files, on the strip mesh with n cells under the half-width
-// (the examples have n = 10, h = B/20), as scripts/validation_report.py refines it.
+// (the examples have n = 10, h = B/20).
 inline std::string model(const std::string& file, int n, double push_end = 0.03) {
   auto text = replace_once(example_text("frictional_footing/" + file), "vtk: {every: 10}",
                            "vtk: {every: 0}");
@@ -116,8 +116,8 @@ inline constexpr double kGammaScale = -0.2;
 // 2 c N_c / (gamma B) = 0.30 to N_gamma (frictional_footing_ngamma_limit*.yaml).
 inline const double kGammaCohesionShare = 2.0 * 0.1 * kNc / 20.0;
 
-/// The N_q example in the rigid-plastic limit (docs/validation.md §9; scripts/validation_report.py
-/// nq_stiff_text): sand E = 1e5 q0 instead of 5000 q0, pushed 0.0015 B so that the mechanism forms
+/// The N_q example in the rigid-plastic limit (docs/validation.md §9
+/// and §13): sand E = 1e5 q0 instead of 5000 q0, pushed 0.0015 B so that the mechanism forms
 /// before the second row of points under the footing crosses its cell; standard MPM (nothing
 /// crosses a cell, so the example's GIMP, for the heave above the surface, is not needed) and up
 /// to 20 Newton iterations a step (the stiff soil's steps need 13-14 on h = B/40); n cells under

@@ -1,5 +1,5 @@
 // The strip footings' mesh (examples/strip_footing, mohr_coulomb_footing, frictional_footing)
-// refined for convergence studies, as scripts/validation_report.py refines it (strip_mesh).
+// refined for convergence studies.
 #pragma once
 
 #include <algorithm>
@@ -38,7 +38,7 @@ inline std::string strip_mesh(std::string text, int n) {
 
 /// `text` (a model on a generated quad4 mesh, 4 points per cell) on tri3 cells with 3 points each:
 /// one diagonal per rectangle, alternating (the generator's default), or both crossed
-/// (docs/theory.md §15), as scripts/validation_report.py's `on_triangles` makes it.
+/// (docs/theory.md §15).
 inline std::string on_triangles(std::string text, bool crossed) {
   text = replace_once(text, "cell: quad4",
                       crossed ? "cell: tri3\n    diagonals: crossed" : "cell: tri3");

@@ -27,7 +27,7 @@ namespace {
 using namespace testing::frictional_footing;
 
 /// The N_q example in the rigid-plastic limit of §9 (nq_rigid_plastic_model) as validation.md §13
-/// runs it (scripts/validation_report.py, nq_triangle_text): the apex rounded (a = 1.5 c,
+/// runs it: the apex rounded (a = 1.5 c,
 /// docs/materials.md §3.6) and Newton started from the last step's increment, as the N_gamma rows
 /// of §11; on crossed triangles with n cells under the half-width.
 std::string nq_on_crossed_triangles(int n, bool rough) {

@@ -69,7 +69,7 @@ constexpr double kPrandtl =
 // The model with the code's defaults where the strip examples differ from them: the pressure
 // equation (the examples' incremental one, eqs. 11.8-11.9) and its start (fitted, eq. 11.11) in
 // `numerics`, and the smooth rigid strip's ghost penalty (`numerics`, eq. 6.3) and energy line
-// search (`newton`, §4.4), whatever their values (scripts/validation_report.py default_numerics,
+// search (`newton`, §4.4), whatever their values (as the former report script did,
 // the same edit).
 std::string default_numerics(std::string text) {
   // Removes "key: value, " (or ", key: value" before the closing brace) from the line that
@@ -202,8 +202,7 @@ std::string final_vtk_only(const std::string& text) {
 // uniform fine region under the footing's final base (0 <= x <= 1, 4 <= y <= 4.9, h = B/20):
 // A = RMS(d2x d2y p / 16) / RMS(p) over the nodes whose 3x3 neighbourhood lies in the region,
 // d2x d2y p / 16 the stencil (1, -2, 1) x (1, -2, 1) / 16, which is 1 for a pure +-1 checkerboard
-// and 0 for any f(x) + g(y) (docs/validation.md §4; scripts/validation_report.py
-// checkerboard_mode).
+// and 0 for any f(x) + g(y) (docs/validation.md §4).
 double checkerboard_mode(const Footing& f) {
   std::vector<std::filesystem::path> grids;
   for (const auto& e : std::filesystem::directory_iterator(f.output / "vtk"))

@@ -39,7 +39,7 @@ using testing::frictional_footing::kNgammaSmooth;
 enum class Mesh { Quad4, Alternating, Crossed };
 
 /// An example on the strip mesh (n cells under the half-width), on quad4 cells (as it is) or on
-/// tri3 cells with 3 points each, as scripts/validation_report.py's `meshed` makes it.
+/// tri3 cells with 3 points each, as docs/validation.md §11 uses them.
 std::string meshed(std::string text, int n, Mesh mesh) {
   text = testing::strip_mesh(testing::replace_once(text, "vtk: {every: 10}", "vtk: {every: 0}"), n);
   return mesh == Mesh::Quad4 ? text : testing::on_triangles(text, mesh == Mesh::Crossed);
