@@ -508,9 +508,8 @@ def main():
     if args.notes and os.path.exists(args.notes):
         with open(args.notes) as f:
             notes = f.read().rstrip()
-        # Tables written by other scripts (bench/footing_timings.md by
-        # bench/strip_refinement.py, bench/predictor_timings.md by bench/newton_predictor.py);
-        # the notes mark where they go, so the doc always carries the last ones (without their
+        # Tables kept in their own files (bench/footing_timings.md, bench/predictor_timings.md,
+        # ...: measured by whole-run scripts, bench/README.md); the notes mark where they go, so the doc always carries the last ones (without their
         # title).
         for name in re.findall(r"<!-- bench/([\w.]+\.md) -->", notes):
             timings = os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
