@@ -19,9 +19,10 @@ def read_summary(path):
 
 
 def value_at(xs, ys, x):
-    """y at x, linear between the rows; None if the run did not get to x (xs ascending)."""
+    """y at x, linear between the rows; None if the run did not get to x (xs ascending). A run
+    that ends a hair short of x (a driven body's own elastic shortening, 1e-9 of it) gets there."""
     for k in range(1, len(xs)):
-        if xs[k] >= x - 1e-12:
+        if xs[k] >= x - 1e-6 * max(1.0, abs(x)):
             if xs[k] == xs[k - 1]:
                 return ys[k]
             a = (x - xs[k - 1]) / (xs[k] - xs[k - 1])

@@ -139,8 +139,8 @@ def shown(case, values):
                 and case.get("show_error", True) else ""
             parts.append((f"{k} " if len(values) > 1 else "") + number(v) + error)
         return "; ".join(parts)
-    low, high = min(values.values()), max(values.values())
-    return number(low) if low == high else f"{number(low)} to {number(high)}"
+    low, high = number(min(values.values())), number(max(values.values()))
+    return low if low == high else f"{low} to {high}"
 
 
 def row(case):
