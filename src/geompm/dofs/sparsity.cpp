@@ -72,4 +72,23 @@ void add_to_tangent(SparseMatrix& tangent, const DofMap& dofs, Index row, Index 
   tangent.valuePtr()[at - inner] += value;
 }
 
+void block_slots(const SparseMatrix& pattern, const DofMap& dofs, std::span<const Index> unknowns,
+                 int* slots) {
+  const std::size_t m = unknowns.size();
+  for (std::size_t c = 0; c < m; ++c) {
+    const Index col = dofs.free_index(unknowns[c]);
+    for (std::size_t r = 0; r < m; ++r) {
+      const Index row = dofs.free_index(unknowns[r]);
+      slots[c * m + r] = -1;
+      if (row < 0 || col < 0) continue;
+      const int* inner = pattern.innerIndexPtr();
+      const int* end = inner + pattern.outerIndexPtr()[col + 1];
+      const int* at = std::lower_bound(inner + pattern.outerIndexPtr()[col], end, row);
+      if (at == end || *at != row)
+        throw std::logic_error("block_slots: a coupling that is not in the pattern");
+      slots[c * m + r] = static_cast<int>(at - inner);
+    }
+  }
+}
+
 }  // namespace geompm
