@@ -2,6 +2,8 @@
 # Installs everything geompm needs on Debian 12 (idempotent, non-interactive).
 #   bash scripts/setup.sh            build, tests and examples
 #   bash scripts/setup.sh --report   and what scripts/validation_report.py needs for its plots
+#   bash scripts/setup.sh --checks   and clang with its sanitizer and fuzzer runtimes and OpenMP
+#                                    (scripts/check_sanitized.sh)
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
@@ -23,8 +25,9 @@ packages=(
 )
 case "${1:-}" in
   --report) packages+=(python3-matplotlib) ;;  # the plots of docs/validation.md
+  --checks) packages+=(clang libclang-rt-dev libomp-dev) ;;
   "") ;;
-  *) echo "setup.sh: unknown option '$1' (expected --report or nothing)" >&2; exit 1 ;;
+  *) echo "setup.sh: unknown option '$1' (expected --report, --checks or nothing)" >&2; exit 1 ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
