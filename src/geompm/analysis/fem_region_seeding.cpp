@@ -53,7 +53,8 @@ void check_structures_clear(const spec::Model& spec, const Model& model) {
     const StructureMesh& mesh = model.structures[s]->mesh();
     for (const Facet& facet : mesh.surface())
       for (int k = 0; k <= facet.corners; ++k) {
-        const Vec3 x = k < facet.corners ? mesh.nodes()[facet.nodes[k]] : facet.centre(mesh.nodes());
+        const Vec3 x =
+            k < facet.corners ? mesh.nodes()[facet.nodes[k]] : facet.centre(mesh.nodes());
         const auto at = model.locator->locate(x);
         if (!at || !model.fem->fem_cell()[at->cell]) continue;
         throw InputError(spec.structures[s].source,

@@ -41,10 +41,10 @@ std::vector<char> near_structure(const spec::MeshRegion& region, const std::vect
       admits[c] = (distance(centroid[c]) <= near.distance) != near.beyond;
     return admits;
   }
-  throw InputError(near.source, fmt::format("region '{}': the model has no structure '{}'; its "
-                                            "structures are: {}",
-                                            region.name, near.structure,
-                                            names.empty() ? "(none)" : names));
+  throw InputError(near.source,
+                   fmt::format("region '{}': the model has no structure '{}'; its "
+                               "structures are: {}",
+                               region.name, near.structure, names.empty() ? "(none)" : names));
 }
 
 }  // namespace

@@ -90,8 +90,8 @@ bool FemRegionTerm::add_cells(const Vector& du, SystemForces* forces, SparseMatr
 }
 
 template <class E>
-bool FemRegionTerm::add_cell(Index k, const Vector& du, SystemForces* forces,
-                             SparseMatrix* tangent, bool commit) {
+bool FemRegionTerm::add_cell(Index k, const Vector& du, SystemForces* forces, SparseMatrix* tangent,
+                             bool commit) {
   constexpr int n = E::nodes * E::dim;
   MaterialPoints& gauss = region_.gauss_points();
   const int nq = region_.points_per_cell();
@@ -107,12 +107,9 @@ bool FemRegionTerm::add_cell(Index k, const Vector& du, SystemForces* forces,
   const Index first = k * nq;
   const auto start_of = [&](int q) {
     const Index g = first + q;
-    return PointStartState{grid_.materials()[gauss.material[g]],
-                           Vec3::Zero(),
-                           0.0,
-                           gauss.deformation_gradient[g],
-                           gauss.elastic_left_cauchy_green[g],
-                           gauss.internal[g]};
+    return PointStartState{
+        grid_.materials()[gauss.material[g]], Vec3::Zero(),     0.0, gauss.deformation_gradient[g],
+        gauss.elastic_left_cauchy_green[g],   gauss.internal[g]};
   };
   const auto on_state = [&](int q, const PointKernelResult<E>& r) {
     if (!commit) return;

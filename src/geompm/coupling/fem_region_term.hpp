@@ -49,7 +49,7 @@ class FemRegionTerm final : public Contribution {
   std::vector<char> averaged_;    // per FEM cell: its material takes the cell's volume average
   std::vector<int> slots_;        // per FEM cell: cell_size_^2 slots in the tangent's values
   std::vector<std::vector<Index>> colours_;  // the region's cells (k) by the grid's colours
-  Vector applied_;                // self-weight per entry of cell_dofs_
+  Vector applied_;                           // self-weight per entry of cell_dofs_
   Vector converged_;
   bool reported_ = false;
 };

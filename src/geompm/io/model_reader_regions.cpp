@@ -43,7 +43,8 @@ std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context
     if (auto given = entry.find("region"))
       region.region = read_region(*given, context);
     else if (!region.near)
-      region_node.fail("a region needs `region` (cells of a group or a shape), `within` or `beyond`");
+      region_node.fail(
+          "a region needs `region` (cells of a group or a shape), `within` or `beyond`");
     else
       region.region.source = region_node.where();
     regions.push_back(std::move(region));

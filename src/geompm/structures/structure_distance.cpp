@@ -23,8 +23,8 @@ double distance_to_triangle(const Vec3& x, const Vec3& a, const Vec3& b, const V
     const double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
     if (v >= 0.0 && w >= 0.0 && v + w <= 1.0) return (x - (a + v * ab + w * ac)).norm();
   }
-  return std::min({distance_to_segment(x, a, b), distance_to_segment(x, b, c),
-                   distance_to_segment(x, c, a)});
+  return std::min(
+      {distance_to_segment(x, a, b), distance_to_segment(x, b, c), distance_to_segment(x, c, a)});
 }
 
 StructureDistance::StructureDistance(const StructureMesh& mesh)
@@ -41,7 +41,8 @@ double StructureDistance::operator()(const Vec3& x) const {
       d = distance_to_segment(x, corner(0), corner(1));
     else
       d = distance_to_triangle(x, corner(0), corner(1), corner(2));
-    if (facet.corners == 4) d = std::min(d, distance_to_triangle(x, corner(0), corner(2), corner(3)));
+    if (facet.corners == 4)
+      d = std::min(d, distance_to_triangle(x, corner(0), corner(2), corner(3)));
     nearest = std::min(nearest, d);
   }
   return nearest;

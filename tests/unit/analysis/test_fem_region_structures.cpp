@@ -8,11 +8,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "example_text.hpp"
 #include "geompm/analysis/mesh_regions.hpp"
 #include "geompm/analysis/model.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/model_reader.hpp"
-#include "example_text.hpp"
 #include "run_model.hpp"
 
 namespace geompm {

@@ -105,7 +105,8 @@ TEST(LevelSet, CountsFemCellsAsFilled) {
   // false surface that counting the points alone would give there).
   auto block = fill_block(
       block_mesh(CellType::Quad4, {3, 5, 1}), Kinematics::PlaneStrain,
-      [](const Vec3& x) { return x.y() < 3.0 ? 0 : -1; }, [](const Vec3& x) { return x.y() < 2.0; });
+      [](const Vec3& x) { return x.y() < 3.0 ? 0 : -1; },
+      [](const Vec3& x) { return x.y() < 2.0; });
   ASSERT_EQ(block->points.size(), 3 * 4);  // one row of MPM cells, four points each
   const LevelSet phi(*block->grid, block->points);
   expect_closed_form(*block, phi, 3.0);

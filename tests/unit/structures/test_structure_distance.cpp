@@ -42,10 +42,10 @@ TEST(StructureDistance, ZeroInsideTheNearestSideOrCornerOutside) {
   const StructureMesh body(rectangle(), Kinematics::PlaneStrain);
   const StructureDistance distance(body);
   EXPECT_EQ(distance(Vec3(0.3, 2.1, 0)), 0.0);
-  EXPECT_NEAR(distance(Vec3(1.5, 2.0, 0)), 1.0, 1e-14);              // beside
-  EXPECT_NEAR(distance(Vec3(0.25, 0.2, 0)), 0.8, 1e-14);             // below
-  EXPECT_NEAR(distance(Vec3(0.8, 0.6, 0)), 0.5, 1e-14);              // off the corner (0.5, 1)
-  EXPECT_NEAR(distance(Vec3(-0.4, 2.0, 0)), 0.4, 1e-14);             // left of its left side
+  EXPECT_NEAR(distance(Vec3(1.5, 2.0, 0)), 1.0, 1e-14);             // beside
+  EXPECT_NEAR(distance(Vec3(0.25, 0.2, 0)), 0.8, 1e-14);            // below
+  EXPECT_NEAR(distance(Vec3(0.8, 0.6, 0)), 0.5, 1e-14);             // off the corner (0.5, 1)
+  EXPECT_NEAR(distance(Vec3(-0.4, 2.0, 0)), 0.4, 1e-14);            // left of its left side
   const StructureMesh pile(rectangle(), Kinematics::Axisymmetric);  // the axis is no surface
   const StructureDistance from_pile(pile);
   EXPECT_NEAR(from_pile(Vec3(0.0, 0.5, 0)), 0.5, 1e-14);  // below its base, on the axis
