@@ -8,55 +8,43 @@
 #include <algorithm>
 #include <cmath>
 
-#include "example_text.hpp"
+#include "footing_run.hpp"
 #include "geompm/io/model_reader.hpp"
-#include "run_model.hpp"
 
 namespace geompm {
 namespace {
 
-struct PileCurve {
-  std::vector<double> settlement, force, iterations, smallest_angle;
-  // The force at settlement s, linear between steps.
-  double force_at(double s) const {
-    for (std::size_t k = 1; k < settlement.size(); ++k)
-      if (settlement[k] >= s - 1e-12) {
-        const double a = (s - settlement[k - 1]) / (settlement[k] - settlement[k - 1]);
-        return force[k - 1] + a * (force[k] - force[k - 1]);
-      }
-    ADD_FAILURE() << "the run did not reach a settlement of " << s;
-    return NAN;
-  }
-};
+// The head's settlement (as Footing::settlement) and force (as Footing::q), per step.
+using PileCurve = testing::Footing;
 
-PileCurve run_pile(const std::string& file) {
+PileCurve run_pile(const std::string& file, std::vector<double>* smallest_angle = nullptr) {
   const std::string text = testing::replace_once(testing::example_text("coupling/" + file),
                                                  "vtk: {every: 5}", "vtk: {every: 0}");
   const auto run = testing::run_spec(read_model_from_string(text, file), file);
+  if (smallest_angle) *smallest_angle = run.column("mesh_smallest_angle");
   PileCurve curve;
   for (double u : run.column("head_uy")) curve.settlement.push_back(-u);
-  for (double f : run.column("head_force")) curve.force.push_back(-f);
+  for (double f : run.column("head_force")) curve.q.push_back(-f);
   curve.iterations = run.column("newton_iterations");
-  if (file == "pile_coupled.yaml") curve.smallest_angle = run.column("mesh_smallest_angle");
   return curve;
 }
 
 TEST(CoupledPile, FollowsTheAllMpmHeadForce) {
-  const PileCurve coupled = run_pile("pile_coupled.yaml");
+  std::vector<double> smallest_angle;
+  const PileCurve coupled = run_pile("pile_coupled.yaml", &smallest_angle);
   const PileCurve mpm = run_pile("pile_all_mpm.yaml");
   const double D = 0.25;
   ASSERT_NEAR(coupled.settlement.back(), 0.05 * D, 1e-12);
   double worst = 0.0;
   for (std::size_t k = 1; k < coupled.settlement.size(); ++k) {
-    const double reference = mpm.force_at(coupled.settlement[k]);
-    EXPECT_NEAR(coupled.force[k], reference, 0.02 * reference)
+    const double reference = mpm.q_at(coupled.settlement[k]);
+    EXPECT_NEAR(coupled.q[k], reference, 0.02 * reference)
         << "at s/D = " << coupled.settlement[k] / D;
-    worst = std::max(worst, std::abs(coupled.force[k] / reference - 1.0));
+    worst = std::max(worst, std::abs(coupled.q[k] / reference - 1.0));
   }
   std::printf("coupled pile: head force within %.3f %% of the all-MPM pile\n", 100.0 * worst);
-  EXPECT_LE(*std::max_element(coupled.iterations.begin(), coupled.iterations.end()), 10);
-  const double angle =
-      *std::min_element(coupled.smallest_angle.begin() + 1, coupled.smallest_angle.end());
+  EXPECT_LE(coupled.max_iterations(), 10);
+  const double angle = *std::min_element(smallest_angle.begin() + 1, smallest_angle.end());
   std::printf("coupled pile: smallest angle of the MPM cells %.2f degrees\n", angle);
   EXPECT_GT(angle, 80.0);
 }
