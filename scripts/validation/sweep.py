@@ -6,11 +6,11 @@ smooth and rough, each pushed to 0.1 B; prints one markdown row per run and the 
 (finished at 0.1 B, at most 10 Newton iterations a step, q/s_u at 0.1 B within 5 % of 2 + pi for
 the strip, Cox, Eason & Hopkins' 5.69 smooth / 6.05 rough for the circle).
 
-Usage: /usr/bin/python3 scripts/validation/sweep.py [--design fractional|full] [--jobs 2]
+Usage: /usr/bin/python3 scripts/validation/sweep.py [--design fractional|full|distinct|CASES.csv] [--jobs 2]
            [--binary build/geompm] [--work DIR] [--newton "{line_search: 6}"]
            [--numerics "{mixed_volume: per_point}"] [--units N-mm]
 --design fractional runs the 16 cases of tests/sweep/fractional_design.csv (the default), full
-all 96. --newton and --numerics try other settings than the defaults; --units N-mm writes the same
+all 96, distinct the 24 distinct problems among them (B and s_u only scale a problem), or the cases of a CSV file with the same columns. --newton and --numerics try other settings than the defaults; --units N-mm writes the same
 models in N and mm (E and s_u in N/mm^2, lengths in mm): the normalised results must not change.
 """
 import argparse
@@ -31,11 +31,14 @@ TOLERANCE, MOST_ITERATIONS = 0.05, 10
 
 
 def cases(design):
-    if design == "fractional":
-        with open(DESIGN) as f:
+    if design not in ("full", "distinct"):
+        with open(DESIGN if design == "fractional" else design) as f:
             return list(csv.DictReader(f))
     keys = ["shape", "B", "su", "E_over_su", "nu", "base"]
-    grid = itertools.product(["strip", "circle"], ["1", "2.5"], ["1", "25"], ["100", "300", "1000"],
+    # B and s_u only scale the problem (test_sweep_units.py): "distinct" runs each of the 24
+    # distinct problems once, at B = 1 m and s_u = 1 kPa.
+    widths, strengths = (["1", "2.5"], ["1", "25"]) if design == "full" else (["1"], ["1"])
+    grid = itertools.product(["strip", "circle"], widths, strengths, ["100", "300", "1000"],
                              ["0.49", "0.4999"], ["smooth", "rough"])
     return [dict(zip(keys, values)) for values in grid]
 
@@ -102,7 +105,9 @@ def reading(case, returncode, rows, millimetres):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--design", choices=["fractional", "full"], default="fractional")
+    parser.add_argument("--design", default="fractional",
+                        help="fractional, full, distinct or a CSV file of cases (the columns of "
+                             "tests/sweep/fractional_design.csv)")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--binary", default=os.path.join(ROOT, "build", "geompm"))
     parser.add_argument("--work", default=None)
