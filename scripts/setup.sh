@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything geompm needs on Debian 12 (idempotent, non-interactive).
 #   bash scripts/setup.sh            build, tests, examples and the validation report's runner
+#   bash scripts/setup.sh --report   and matplotlib for scripts/plot_regions.py
+#   bash scripts/setup.sh --checks   and clang with its sanitizer and fuzzer runtimes and OpenMP
+#                                    (scripts/check_sanitized.sh)
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
@@ -21,9 +24,12 @@ packages=(
   python3-meshio         # independent VTU reader used by the output test
   python3-yaml           # the validation cases' model overrides (scripts/validation/run_cases.py)
 )
-if [ $# -gt 0 ]; then
-  echo "setup.sh: takes no options (got '$1')" >&2; exit 1
-fi
+case "${1:-}" in
+  --report) packages+=(python3-matplotlib) ;;  # scripts/plot_regions.py
+  --checks) packages+=(clang libclang-rt-dev libomp-dev) ;;
+  "") ;;
+  *) echo "setup.sh: unknown option '$1' (expected --report, --checks or nothing)" >&2; exit 1 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -29,4 +29,31 @@ inline std::string replace_once(std::string text, const std::string& from, const
   return text.replace(at, from.size(), to);
 }
 
+/// `text` with `key: value` in its `numerics: {...}` line: the key's value replaced if the line
+/// names it, else the entry added; a `numerics` line appended if the model has none (the examples
+/// carry one only where they show an option, so tests set the options they vary this way).
+inline std::string with_numerics(std::string text, const std::string& key,
+                                 const std::string& value) {
+  const std::string entry = key + ": " + value;
+  std::size_t line = text.rfind("\nnumerics: {");
+  if (text.rfind("numerics: {", 0) == 0) line = 0;
+  if (line == std::string::npos) {
+    if (!text.empty() && text.back() != '\n') text += '\n';
+    return text + "numerics: {" + entry + "}\n";
+  }
+  const std::size_t open = text.find('{', line), close = text.find('}', open);
+  EXPECT_NE(close, std::string::npos) << "numerics line without its closing brace";
+  if (close == std::string::npos) return text;
+  // The key as a whole entry: after the brace or after ", ".
+  for (const std::string lead : {"{", ", "}) {
+    const std::size_t at = text.find(lead + key + ": ", open);
+    if (at == std::string::npos || at > close) continue;
+    const std::size_t start = at + lead.size();
+    const std::size_t comma = text.find(", ", start);
+    const std::size_t end = comma < close ? comma : close;
+    return text.replace(start, end - start, entry);
+  }
+  return text.insert(open + 1, close == open + 1 ? entry : entry + ", ");
+}
+
 }  // namespace geompm::testing

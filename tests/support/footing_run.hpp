@@ -72,7 +72,7 @@ inline const Footing& run_footing(const std::string& text, const std::string& na
 
 // The model with the pressure equation over the step (docs/theory.md eqs. 11.8-11.9).
 inline std::string incremental_pressure(const std::string& text) {
-  return replace_once(text, "numerics: {", "numerics: {mixed_pressure_equation: incremental, ");
+  return with_numerics(text, "mixed_pressure_equation", "incremental");
 }
 
 }  // namespace geompm::testing

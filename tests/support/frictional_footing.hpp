@@ -127,7 +127,7 @@ inline std::string nq_rigid_plastic_model(int n) {
       replace_once(replace_once(example_text("frictional_footing/frictional_footing_nq.yaml"),
                                 "vtk: {every: 10}", "vtk: {every: 0}"),
                    "E: 5000,", "E: 100000,");
-  text = replace_once(replace_once(text, "interpolation: gimp, ", ""),
+  text = replace_once(with_numerics(text, "interpolation", "standard"),
                       "line_search: 6, max_iterations: 10,", "line_search: 6, max_iterations: 20,");
   return strip_mesh(replace_once(text, "\"-0.01*t\"", "\"-0.0015*t\""), n);
 }

@@ -77,7 +77,7 @@ Curve reference_curve(const std::string& example, double scale) {
 }
 
 TEST(ContactFootings, SmoothAndRoughRigidStripsCarryPrandtlsLoad) {
-  // Measured: smooth 5.09, rough 5.19 at 0.1 B (-1.1 %, +1.1 %); over 0.08-0.1 B 5.07, 5.20.
+  // Measured: smooth 5.01, rough 5.21 at 0.1 B (-2.6 %, +1.4 %); over 0.08-0.1 B 4.98, 5.24.
   const Curve smooth = reference_curve("strip_footing_smooth", 2.0);
   const Curve rough = reference_curve("strip_footing_rough", 2.0);
   for (const Curve* c : {&smooth, &rough}) {
@@ -91,11 +91,10 @@ TEST(ContactFootings, SmoothAndRoughRigidStripsCarryPrandtlsLoad) {
 }
 
 TEST(ContactFootings, RigidCirclesOnDOver20ComeWithinTheMeshsOverEstimate) {
-  // Axisymmetric, per radian: q / s_u = 8 x force (D = 1). Measured at 0.1 D: rough 6.25
-  // (+3.3 % from 6.05), smooth 6.01 (+5.7 % from 5.69); over 0.08-0.1 D 6.17 and 6.00. The
-  // rough one is within the target; the smooth one is not (docs/validation.md §17): the
-  // axisymmetric mechanism on h = D/20 over-estimates N_c, as the penalty footings of §7 show
-  // (+6.9 % to +16.7 %), so both are asserted above N_c.
+  // Axisymmetric, per radian: q / s_u = 8 x force (D = 1). Measured at 0.1 D: rough 6.19
+  // (+2.4 % from 6.05), smooth 5.76 (+1.2 % from 5.69); over 0.08-0.1 D 6.14 and 5.71. Both are
+  // within the target (docs/validation.md §17), and above N_c: the axisymmetric mechanism on
+  // h = D/20 over-estimates it, as the penalty footings of §7 show (+6.9 % to +16.7 %).
   const Curve smooth = reference_curve("circular_footing_smooth", 8.0);
   const Curve rough = reference_curve("circular_footing_rough", 8.0);
   constexpr double kSmooth = 5.69, kRough = 6.05;
@@ -109,9 +108,7 @@ TEST(ContactFootings, RigidCirclesOnDOver20ComeWithinTheMeshsOverEstimate) {
   }
   for (const double q : {smooth.q_at(0.1), smooth.q_mean(0.08, 0.1)}) {
     EXPECT_GE(q, kSmooth);
-    // Not reached: within 5 % (measured +5.4 to +5.7 %). No worse than the smooth penalty
-    // footing on the same mesh, the best of §7's D/20 runs (+6.9 %).
-    EXPECT_LE(q, 1.069 * kSmooth);
+    EXPECT_LE(q, 1.05 * kSmooth);
   }
   EXPECT_LE(smooth.q_at(0.1), rough.q_at(0.1));
   EXPECT_LE(smooth.q_mean(0.08, 0.1), rough.q_mean(0.08, 0.1));

@@ -13,8 +13,17 @@ namespace {
 // The oedometer on a mesh large enough that every parallel loop runs in parallel, with
 // `interpolation`, run on one and on two threads: every point's stress and position and every
 // history value must be the same to the bit.
-void expect_thread_count_independent(spec::Interpolation interpolation, const std::string& name) {
+void expect_thread_count_independent(spec::Interpolation interpolation, const std::string& name,
+                                     bool fem_below = false) {
   auto spec = testing::read_example("oedometer/oedometer.yaml");
+  if (fem_below) {  // the lower half FEM cells (docs/theory.md §19), assembled colour by colour
+    spec::MeshRegion fem;
+    fem.name = "lower";
+    fem.kind = CellKind::Fem;
+    fem.region.kind = spec::Region::Kind::Box;
+    fem.region.max = Vec3(1.0, 0.5, 0.0);
+    spec.regions.push_back(fem);
+  }
   auto& grid = *spec.mesh.generate;
   grid.axes[0] = {AxisSegment{1.0, 48, 1.0}};
   grid.axes[1] = {AxisSegment{1.25, 60, 1.0}};
@@ -33,6 +42,12 @@ void expect_thread_count_independent(spec::Interpolation interpolation, const st
     worst = std::max(worst, (one.model->points.stress[p] - two.model->points.stress[p]).norm());
     worst = std::max(worst, (one.model->points.position[p] - two.model->points.position[p]).norm());
   }
+  if (fem_below) {
+    const MaterialPoints &g1 = one.model->fem->gauss_points(), &g2 = two.model->fem->gauss_points();
+    ASSERT_GT(g1.size(), 4096);
+    for (Index g = 0; g < g1.size(); ++g)
+      worst = std::max(worst, (g1.stress[g] - g2.stress[g]).norm());
+  }
   EXPECT_EQ(worst, 0.0);
   EXPECT_EQ(one.history.rows, two.history.rows);
 }
@@ -45,6 +60,11 @@ TEST(Threads, OneAndTwoThreadsGiveIdenticalResults) {
 // and scattered in point order (physics/point_integrator.cpp).
 TEST(Threads, WideStencilsOnOneAndTwoThreadsGiveIdenticalResults) {
   expect_thread_count_independent(spec::Interpolation::Gimp, "threads_gimp");
+}
+
+// The FEM region's cells run on all threads too, one colour of the grid at a time.
+TEST(Threads, FemCellsOnOneAndTwoThreadsGiveIdenticalResults) {
+  expect_thread_count_independent(spec::Interpolation::Standard, "threads_fem", true);
 }
 
 }  // namespace

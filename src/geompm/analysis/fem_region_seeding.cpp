@@ -46,6 +46,29 @@ void check_supported(const spec::Model& spec, const spec::MeshRegion& region) {
         "ddmp");
 }
 
+// Contact acts on the material points of MPM cells (docs/theory.md §18-§19): a structure whose
+// surface lies in an FEM cell at the start would pass through the soil there.
+void check_structures_clear(const spec::Model& spec, const Model& model) {
+  for (std::size_t s = 0; s < model.structures.size(); ++s) {
+    const StructureMesh& mesh = model.structures[s]->mesh();
+    for (const Facet& facet : mesh.surface())
+      for (int k = 0; k <= facet.corners; ++k) {
+        const Vec3 x =
+            k < facet.corners ? mesh.nodes()[facet.nodes[k]] : facet.centre(mesh.nodes());
+        const auto at = model.locator->locate(x);
+        if (!at || !model.fem->fem_cell()[at->cell]) continue;
+        throw InputError(spec.structures[s].source,
+                         fmt::format("the surface of structure '{}' lies in FEM cell {} at "
+                                     "[{:g}, {:g}, {:g}]: contact acts on the material points of "
+                                     "MPM cells only; make the cells around the structure and "
+                                     "along its path MPM cells (regions, e.g. beyond: "
+                                     "{{structure: {}, distance: ...}})",
+                                     spec.structures[s].name, at->cell, x.x(), x.y(), x.z(),
+                                     spec.structures[s].name));
+      }
+  }
+}
+
 // The Gauss points of FEM cell c, of body b.
 void seed_cell(const spec::Model& spec, std::size_t b, Index c, Model& model) {
   const int dim = model.mesh.dim();
@@ -65,7 +88,7 @@ void seed_cell(const spec::Model& spec, std::size_t b, Index c, Model& model) {
 
 void build_fem_region(const spec::Model& spec, Model& model) {
   const Mesh& mesh = model.mesh;
-  std::vector<CellKind> kinds = classify_cells(spec, mesh);
+  std::vector<CellKind> kinds = classify_cells(spec, mesh, model.structures);
   if (kinds.empty()) return;
   model.cell_kinds = kinds;
   if (std::none_of(kinds.begin(), kinds.end(), [](CellKind k) { return k == CellKind::Fem; }))
@@ -73,6 +96,7 @@ void build_fem_region(const spec::Model& spec, Model& model) {
   for (const spec::MeshRegion& region : spec.regions)
     if (region.kind == CellKind::Fem) check_supported(spec, region);
   model.fem = std::make_unique<FemRegion>(mesh, kinds);
+  check_structures_clear(spec, model);
   std::vector<RegionTest> bodies;
   for (const spec::Body& body : spec.bodies) bodies.emplace_back(body.region, mesh, mesh.dim());
   for (Index c : model.fem->cells()) {

@@ -5,6 +5,7 @@
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/mesh/element.hpp"
+#include "geompm/structures/structure_distance.hpp"
 
 namespace geompm {
 
@@ -19,7 +20,37 @@ Vec3 cell_centroid(const Mesh& mesh, Index c) {
   return x / corners;
 }
 
-std::vector<CellKind> classify_cells(const spec::Model& spec, const Mesh& mesh) {
+namespace {
+
+// Per cell, whether region r's distance from its structure admits the cell's centroid (every cell
+// when the region gives no distance).
+std::vector<char> near_structure(const spec::MeshRegion& region, const std::vector<Vec3>& centroid,
+                                 const spec::Model& spec,
+                                 const std::vector<std::unique_ptr<Structure>>& structures) {
+  if (!region.near) return std::vector<char>(centroid.size(), 1);
+  const spec::MeshRegion::Near& near = *region.near;
+  std::string names;
+  for (std::size_t s = 0; s < spec.structures.size(); ++s) {
+    if (spec.structures[s].name != near.structure) {
+      names += (names.empty() ? "" : ", ") + spec.structures[s].name;
+      continue;
+    }
+    const StructureDistance distance(structures[s]->mesh());
+    std::vector<char> admits(centroid.size());
+    for (std::size_t c = 0; c < centroid.size(); ++c)
+      admits[c] = (distance(centroid[c]) <= near.distance) != near.beyond;
+    return admits;
+  }
+  throw InputError(near.source,
+                   fmt::format("region '{}': the model has no structure '{}'; its "
+                               "structures are: {}",
+                               region.name, near.structure, names.empty() ? "(none)" : names));
+}
+
+}  // namespace
+
+std::vector<CellKind> classify_cells(const spec::Model& spec, const Mesh& mesh,
+                                     const std::vector<std::unique_ptr<Structure>>& structures) {
   if (spec.regions.empty()) return {};
   const Index n = mesh.num_cells();
   std::vector<CellKind> kind(n, CellKind::Mpm);
@@ -29,9 +60,10 @@ std::vector<CellKind> classify_cells(const spec::Model& spec, const Mesh& mesh) 
   for (std::size_t r = 0; r < spec.regions.size(); ++r) {
     const spec::MeshRegion& region = spec.regions[r];
     const RegionTest test(region.region, mesh, mesh.dim());
+    const std::vector<char> near = near_structure(region, centroid, spec, structures);
     Index count = 0;
     for (Index c = 0; c < n; ++c) {
-      if (!test.contains(centroid[c], c)) continue;
+      if (!near[c] || !test.contains(centroid[c], c)) continue;
       ++count;
       if (named_by[c] >= 0 && kind[c] != region.kind) {
         const spec::MeshRegion& other = spec.regions[named_by[c]];

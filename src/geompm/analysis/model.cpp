@@ -446,16 +446,18 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   check_cells_carry_points(spec, mesh);
   model->locator = std::make_unique<PointLocator>(mesh);
   create_materials(spec, *model);
+  // The structures before the FEM region: its cells may be given by their distance from one.
+  for (const spec::Structure& structure : spec.structures) {
+    model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
+    model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
+  }
   build_fem_region(spec, *model);
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
   check_footings_in_mesh(spec, mesh);
-  for (const spec::Structure& structure : spec.structures) {
-    model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
-    model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
-    check_adhesion_strength(*model, model->contacts.back(), structure.contact);
-  }
+  for (std::size_t s = 0; s < spec.structures.size(); ++s)
+    check_adhesion_strength(*model, model->contacts[s], spec.structures[s].contact);
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
   // (docs/theory.md §10), before any step.
   apply_initial_stresses(*model);

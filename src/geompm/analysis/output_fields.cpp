@@ -90,6 +90,11 @@ void grid_fields(const Model& model, const GridSystem& grid, const StepResult& s
   }
   cell_fields.integers.emplace_back("active", std::move(is_active));
   cell_fields.scalars.emplace_back("fill", std::move(fill));
+  if (model.cell_kinds.empty()) return;
+  // With `regions`, each cell's kind (0 MPM, 1 FEM, 2 buffer: CellKind's order), to colour by.
+  std::vector<Index> kind;
+  for (CellKind k : model.cell_kinds) kind.push_back(static_cast<Index>(k));
+  cell_fields.integers.emplace_back("cell_kind", std::move(kind));
 }
 
 }  // namespace geompm

@@ -1,9 +1,12 @@
 #include "geompm/contact/level_set_contact.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
+#include "geompm/core/error.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 
@@ -139,6 +142,8 @@ std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
     const double h = cell_size(grid_.mesh(), at->cell);
     const auto where = locator_.locate(centre + 1e-3 * h * all_[s].normal, at->cell);
     if (!where) continue;
+    refuse_fem_cell(at->cell, centre);
+    refuse_fem_cell(where->cell, centre);
     hint = where->cell;
     std::size_t g = 0;
     while (g < groups.size() &&
@@ -171,6 +176,18 @@ double LevelSetContact::cell_strength(Index cell) const {
   return volume > 0.0 ? sum / volume : 0.0;
 }
 
+void LevelSetContact::refuse_fem_cell(Index cell, const Vec3& x) const {
+  // Contact acts on the soil's material points: their level set gives the gap and their cells
+  // the soil's displacement and strength. An FEM cell has no points (docs/theory.md §19): a
+  // structure reaching one would pass through it or push its nodes without the soil's strength.
+  if (!grid_.fem_cell(cell)) return;
+  throw RunError(fmt::format(
+      "the contact surface of structure '{}' reaches FEM cell {} at [{:g}, {:g}, {:g}]: contact "
+      "acts on the material points of MPM cells only; make the cells around the structure and "
+      "along its path MPM cells (regions)",
+      structure_.name(), cell, x.x(), x.y(), x.z()));
+}
+
 std::optional<Location> LevelSetContact::soil_cell(const Vec3& x, const Vec3& normal, double h,
                                                    Index cell) const {
   // The soil's displacement at a contact point is read in the first cell along the normal, into
@@ -184,6 +201,7 @@ std::optional<Location> LevelSetContact::soil_cell(const Vec3& x, const Vec3& no
     const auto at = locator_.locate(y, cell);
     if (!at) break;
     cell = at->cell;
+    refuse_fem_cell(cell, x);
     const double fill = fill_[at->cell];
     if (fill >= fill_threshold_) return at;
     if (fill > most) most = fill, fullest = at;

@@ -60,6 +60,8 @@ class LevelSetContact final : public Contribution {
   double multiplier(const Vector& du, std::size_t k, int component) const;
   /// Segment k's mean penetration p at the increment du (eq. 18.3).
   double penetration(const Vector& du, std::size_t k) const;
+  /// Throws RunError if mesh cell `cell`, which the surface at x reaches, is an FEM cell.
+  void refuse_fem_cell(Index cell, const Vec3& x) const;
   std::optional<Location> soil_cell(const Vec3& x, const Vec3& normal, double h, Index cell) const;
   /// The mean s_u of the touched bodies' points in a cell (0 if none carries one).
   double cell_strength(Index cell) const;

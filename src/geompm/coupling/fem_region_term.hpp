@@ -22,6 +22,8 @@ class FemRegionTerm final : public Contribution {
   FemRegionTerm(FemRegion& region, const GridSystem& grid, const DofMap& dofs, const Vec3& gravity);
   const char* name() const override { return "fem region"; }
   void declare_couplings(SparsityBuilder& pattern) const override;
+  /// Finds where each cell's stiffness entries go in the step's pattern, once a step.
+  void attach(const SparseMatrix& pattern) override;
   bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
   void report(const Vector& du, Reactions& reactions) override;
   void commit() override;
@@ -33,6 +35,10 @@ class FemRegionTerm final : public Contribution {
  private:
   // Adds the cells' internal forces (and tangent) at du; writes the states if `commit`.
   bool add_cells(const Vector& du, SystemForces* forces, SparseMatrix* tangent, bool commit);
+  // The same for region cell k (element E).
+  template <class E>
+  bool add_cell(Index k, const Vector& du, SystemForces* forces, SparseMatrix* tangent,
+                bool commit);
 
   FemRegion& region_;
   const GridSystem& grid_;
@@ -41,7 +47,9 @@ class FemRegionTerm final : public Contribution {
   std::vector<Index> cell_dofs_;  // per FEM cell: its nodes' displacement unknowns, node-major
   std::vector<double> X_;         // per FEM cell: its nodes' positions at the step's start
   std::vector<char> averaged_;    // per FEM cell: its material takes the cell's volume average
-  Vector applied_;                // self-weight per entry of cell_dofs_
+  std::vector<int> slots_;        // per FEM cell: cell_size_^2 slots in the tangent's values
+  std::vector<std::vector<Index>> colours_;  // the region's cells (k) by the grid's colours
+  Vector applied_;                           // self-weight per entry of cell_dofs_
   Vector converged_;
   bool reported_ = false;
 };

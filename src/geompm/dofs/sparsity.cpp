@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace geompm {
 
@@ -61,15 +62,36 @@ SparseMatrix SparsityBuilder::build() {
   return pattern;
 }
 
+namespace {
+
+// The position of entry (row, col), free indices, in the pattern's values.
+int value_slot(const SparseMatrix& pattern, Index row, Index col, const char* who) {
+  const int* inner = pattern.innerIndexPtr();
+  const int* end = inner + pattern.outerIndexPtr()[col + 1];
+  const int* at = std::lower_bound(inner + pattern.outerIndexPtr()[col], end, row);
+  if (at == end || *at != row)
+    throw std::logic_error(std::string(who) + ": a coupling that is not in the pattern");
+  return static_cast<int>(at - inner);
+}
+
+}  // namespace
+
 void add_to_tangent(SparseMatrix& tangent, const DofMap& dofs, Index row, Index col, double value) {
   const Index r = dofs.free_index(row), c = dofs.free_index(col);
   if (r < 0 || c < 0) return;
-  const int* inner = tangent.innerIndexPtr();
-  const int* end = inner + tangent.outerIndexPtr()[c + 1];
-  const int* at = std::lower_bound(inner + tangent.outerIndexPtr()[c], end, r);
-  if (at == end || *at != r)
-    throw std::logic_error("add_to_tangent: a coupling that is not in the pattern");
-  tangent.valuePtr()[at - inner] += value;
+  tangent.valuePtr()[value_slot(tangent, r, c, "add_to_tangent")] += value;
+}
+
+void block_slots(const SparseMatrix& pattern, const DofMap& dofs, std::span<const Index> unknowns,
+                 int* slots) {
+  const std::size_t m = unknowns.size();
+  for (std::size_t c = 0; c < m; ++c) {
+    const Index col = dofs.free_index(unknowns[c]);
+    for (std::size_t r = 0; r < m; ++r) {
+      const Index row = dofs.free_index(unknowns[r]);
+      slots[c * m + r] = row < 0 || col < 0 ? -1 : value_slot(pattern, row, col, "block_slots");
+    }
+  }
 }
 
 }  // namespace geompm

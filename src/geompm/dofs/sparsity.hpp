@@ -38,4 +38,12 @@ class SparsityBuilder {
 /// such entry (a contribution that did not declare its coupling).
 void add_to_tangent(SparseMatrix& tangent, const DofMap& dofs, Index row, Index col, double value);
 
+/// Where the entries among `unknowns` (m of them, their couplings declared) lie in the pattern's
+/// values: slots[c * m + r] for row unknowns[r] and column unknowns[c], -1 where either is
+/// constrained. Found once a step (a contribution's attach), so that each Newton iteration adds a
+/// block's entries without add_to_tangent's search per entry. Throws std::logic_error as
+/// add_to_tangent does.
+void block_slots(const SparseMatrix& pattern, const DofMap& dofs, std::span<const Index> unknowns,
+                 int* slots);
+
 }  // namespace geompm

@@ -8,11 +8,25 @@
 
 namespace geompm::model_reader {
 
+namespace {
+
+// `within` / `beyond`: {structure: name, distance: d}, the cells by their distance from it.
+spec::MeshRegion::Near read_near(const yaml::Node& node) {
+  const yaml::Map entry = node.map({"structure", "distance"});
+  spec::MeshRegion::Near near;
+  near.structure = entry.required("structure").text();
+  near.distance = read_positive(entry.required("distance"));
+  near.source = node.where();
+  return near;
+}
+
+}  // namespace
+
 std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context& context) {
   std::vector<spec::MeshRegion> regions;
   for (const auto& [name, region_node] : node.entries()) {
     if (name.empty()) region_node.fail("a region needs a name");
-    const yaml::Map entry = region_node.map({"kind", "region"});
+    const yaml::Map entry = region_node.map({"kind", "region", "within", "beyond"});
     spec::MeshRegion region;
     region.name = name;
     region.source = region_node.where();
@@ -20,7 +34,19 @@ std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context
     region.kind = kind == "fem"      ? CellKind::Fem
                   : kind == "buffer" ? CellKind::Buffer
                                      : CellKind::Mpm;
-    region.region = read_region(entry.required("region"), context);
+    const auto within = entry.find("within"), beyond = entry.find("beyond");
+    if (within && beyond) beyond->fail("give either within or beyond, not both");
+    if (within || beyond) {
+      region.near = read_near(within ? *within : *beyond);
+      region.near->beyond = beyond.has_value();
+    }
+    if (auto given = entry.find("region"))
+      region.region = read_region(*given, context);
+    else if (!region.near)
+      region_node.fail(
+          "a region needs `region` (cells of a group or a shape), `within` or `beyond`");
+    else
+      region.region.source = region_node.where();
     regions.push_back(std::move(region));
   }
   return regions;

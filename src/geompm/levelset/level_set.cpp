@@ -8,9 +8,12 @@ namespace {
 
 /// V_I of eq. 16.1 per active node: the integral of N_I over every mesh cell around the node
 /// (active or not), in the plane (in axisymmetry: of the meridian plane, as the points' weights
-/// are taken). The element's Gauss rule is exact for the mass matrix, so for N_I too.
+/// are taken). The element's Gauss rule is exact for the mass matrix, so for N_I too. The same
+/// integral over the FEM cells around the node is added to `filled`: an FEM cell is soil
+/// throughout (docs/theory.md §19), though it holds no material points, so the nodes an FEM region
+/// shares with the MPM region are inside the soil, not on a boundary between them.
 template <class E>
-std::vector<double> support_measure(const GridSystem& grid) {
+std::vector<double> support_measure(const GridSystem& grid, std::vector<double>& filled) {
   constexpr CellType T = cell_type_of<E>;
   const Mesh& mesh = grid.mesh();
   const auto& active = grid.active_nodes();
@@ -27,8 +30,12 @@ std::vector<double> support_measure(const GridSystem& grid) {
       const typename E::Local xi = E::quadrature_point(q);
       const double w = E::quadrature_weight(q) * jacobian<T>(X, xi).determinant();
       const typename E::Values N = E::shape(xi);
-      for (int a = 0; a < E::nodes; ++a)
-        if (node_to_active[nodes[a]] >= 0) measure[node_to_active[nodes[a]]] += w * N(a);
+      for (int a = 0; a < E::nodes; ++a) {
+        const Index node = node_to_active[nodes[a]];
+        if (node < 0) continue;
+        measure[node] += w * N(a);
+        if (grid.fem_cell(c)) filled[node] += w * N(a);
+      }
     }
   }
   return measure;
@@ -52,7 +59,7 @@ LevelSet::LevelSet(const GridSystem& grid, const MaterialPoints& points, std::ve
     grid.for_each_weight(points, p, [&](Index node, double N) { filled[node] += N * V; });
   }
   const std::vector<double> support = dispatch_cell_type(
-      grid.mesh().cell_type, [&](auto e) { return support_measure<decltype(e)>(grid); });
+      grid.mesh().cell_type, [&](auto e) { return support_measure<decltype(e)>(grid, filled); });
   phi_.assign(n_nodes, outside);
   for (std::size_t a = 0; a < n_nodes; ++a)
     if (support[a] > 0.0) phi_[a] = filled[a] / support[a] - 0.5;

@@ -13,7 +13,8 @@
 namespace geompm {
 
 /// Density-based level set of the material points on the step's grid (seed §3.3): per active node
-/// phi_I = m_I / (rho_I V_I) - 1/2, where m_I is the nodal mass of the selected bodies' points,
+/// phi_I = m_I / (rho_I V_I) - 1/2, where m_I is the nodal mass of the selected bodies' points
+/// (an FEM cell counts as filled: docs/theory.md §19.4),
 /// rho_I their density at the node, V_I = integral of N_I over all mesh cells around the node.
 /// Positive inside the body, 0 on its boundary, -1/2 far outside.
 ///

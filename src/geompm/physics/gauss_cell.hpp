@@ -70,13 +70,21 @@ bool integrate_gauss_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X,
 }
 
 /// Adds a cell's internal force to `internal` and its stiffness to `tangent` (either may be null)
-/// at the cell's unknowns `dofs` (node-major, E::nodes * E::dim of them).
+/// at the cell's unknowns `dofs` (node-major, E::nodes * E::dim of them); through `slots`
+/// (dofs/sparsity.hpp, block_slots over `dofs`) where given, else by searching for each entry.
 template <class E>
 void scatter_cell(const PointKernelResult<E>& cell, const Index* dofs, const DofMap& map,
-                  Vector* internal, SparseMatrix* tangent) {
+                  Vector* internal, SparseMatrix* tangent, const int* slots = nullptr) {
   constexpr int n = E::nodes * E::dim;
   if (internal)
     for (int i = 0; i < n; ++i) (*internal)(dofs[i]) += cell.internal_force(i);
+  if (tangent && slots) {
+    double* values = tangent->valuePtr();
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (slots[j * n + i] >= 0) values[slots[j * n + i]] += cell.stiffness(i, j);
+    return;
+  }
   if (tangent)
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)

@@ -57,7 +57,16 @@ struct Region {
 struct MeshRegion {
   std::string name;
   CellKind kind = CellKind::Mpm;
-  Region region;
+  Region region;  // All when only a distance from a structure is given
+  /// Optionally, of those cells the ones whose centroid lies within (or beyond) `distance` of a
+  /// structure as the model file places it (inside it counts as distance 0).
+  struct Near {
+    std::string structure;
+    double distance = 0.0;
+    bool beyond = false;
+    SourceLocation source;
+  };
+  std::optional<Near> near;
   SourceLocation source;
 };
 

@@ -147,6 +147,16 @@ struct Arcs {
   std::vector<int> arcs, points;
 };
 
+/// A pipe's or T-bar's outer radius and wall thickness (0: solid).
+std::pair<double, double> circle_radii(const spec::StructureShape& s) {
+  const double R = 0.5 * dimension(s, "diameter");
+  const double t = s.kind == "pipe" ? dimension(s, "thickness", 0.0, true) : 0.0;
+  if (t >= R)
+    throw std::invalid_argument(fmt::format(
+        "thickness of the pipe: expected less than its radius {} (0: solid), found {}", R, t));
+  return {R, t};
+}
+
 Arcs circle_arcs(const Vec3& c, double r, double h, bool half) {
   namespace geo = gmsh::model::geo;
   const int centre = geo::addPoint(c.x(), c.y(), 0, h);
@@ -163,11 +173,7 @@ Arcs circle_arcs(const Vec3& c, double r, double h, bool half) {
 
 void circle_section(const spec::StructureShape& s, bool axisymmetric, double h) {
   namespace geo = gmsh::model::geo;
-  const double R = 0.5 * dimension(s, "diameter");
-  const double t = s.kind == "pipe" ? dimension(s, "thickness", 0.0, true) : 0.0;
-  if (t >= R)
-    throw std::invalid_argument(fmt::format(
-        "thickness of the pipe: expected less than its radius {} (0: solid), found {}", R, t));
+  const auto [R, t] = circle_radii(s);
   const Vec3& c = s.position;
   const Arcs outer = circle_arcs(c, R, h, axisymmetric);
   if (!axisymmetric) {
@@ -237,11 +243,8 @@ void mesh_3d(const spec::StructureShape& s, double h) {
   gmsh::vectorpair out;
   if (s.kind == "pipe" || s.kind == "tbar") {
     // A horizontal cylinder along y, centred at p.
-    const double R = 0.5 * dimension(s, "diameter"), L = dimension(s, "length");
-    const double t = s.kind == "pipe" ? dimension(s, "thickness", 0.0, true) : 0.0;
-    if (t >= R)
-      throw std::invalid_argument(fmt::format(
-          "thickness of the pipe: expected less than its radius {} (0: solid), found {}", R, t));
+    const auto [R, t] = circle_radii(s);
+    const double L = dimension(s, "length");
     const int outer = occ::addCylinder(p.x(), p.y() - 0.5 * L, p.z(), 0, L, 0, R);
     if (t > 0) {
       const int inner = occ::addCylinder(p.x(), p.y() - 0.5 * L, p.z(), 0, L, 0, R - t);
@@ -266,6 +269,33 @@ void mesh_3d(const spec::StructureShape& s, double h) {
   gmsh::option::setNumber("Mesh.CharacteristicLengthMax", h);
   gmsh::option::setNumber("Mesh.CharacteristicLengthMin", 0.2 * h);
   gmsh::model::mesh::generate(3);
+}
+
+// The shape in units of its cell size h, anchored at the origin. Gmsh meshes this one: its
+// floating-point decisions (the frontal mesher's, its geometric tolerance) then see the same
+// numbers whatever the model's length unit and wherever the shape stands, so the mesh only scales
+// with the unit (a footing 2.5 m wide was meshed with 130 nodes, the same 2500 mm wide with 129,
+// and the two models' loads differed by 5e-5).
+// The dimensions as given checked (messages in the model's units) before the shape is meshed in
+// units of its cell size.
+void check_dimensions(const spec::StructureShape& s, bool three_d) {
+  if (s.kind == "pipe" || s.kind == "tbar") {
+    (void)circle_radii(s);
+    if (three_d) (void)dimension(s, "length");
+    return;
+  }
+  (void)shape_profile(s);
+  if (three_d && s.kind == "footing") (void)dimension(s, "breadth", 1.0);
+  if (three_d && s.kind == "plate") (void)dimension(s, "breadth");
+}
+
+spec::StructureShape unit_shape(const spec::StructureShape& s, double h) {
+  spec::StructureShape unit = s;
+  for (auto& [key, value] : unit.dimensions)
+    if (!key.ends_with("angle")) value /= h;
+  unit.position = Vec3::Zero();
+  unit.cell_size = 1.0;
+  return unit;
 }
 
 }  // namespace
@@ -295,15 +325,19 @@ Mesh shape_mesh(const spec::StructureShape& s, Kinematics kinematics) {
     throw std::invalid_argument(fmt::format("a built-in shape in a {} model is meshed with {}",
                                             to_string(kinematics),
                                             three_d ? "tet4" : "tri3, tri6 or quad4"));
+  check_dimensions(s, three_d);
   const double h = cell_size(s);
+  const spec::StructureShape unit = unit_shape(s, h);
   GmshSession session;
   try {
     gmsh::model::add(s.kind);
     if (three_d)
-      mesh_3d(s, h);
+      mesh_3d(unit, 1.0);
     else
-      mesh_2d(s, kinematics, h);
-    return mesh_from_gmsh_model(fmt::format("the {} shape", s.kind), three_d ? 3 : 2);
+      mesh_2d(unit, kinematics, 1.0);
+    Mesh mesh = mesh_from_gmsh_model(fmt::format("the {} shape", s.kind), three_d ? 3 : 2);
+    for (Vec3& x : mesh.nodes) x = h * x + s.position;
+    return mesh;
   } catch (const std::invalid_argument&) {
     throw;
   } catch (const std::exception& e) {

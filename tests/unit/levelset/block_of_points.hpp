@@ -38,9 +38,11 @@ inline StructuredMeshSpec block_mesh(CellType type, std::array<int, 3> cells,
 }
 
 /// Fills every cell with Gauss points of body body_at(centroid) (none if negative; material index
-/// = body index, densities 2 and 3 for bodies 0 and 1), then initialises the grid.
+/// = body index, densities 2 and 3 for bodies 0 and 1), then initialises the grid. Cells where
+/// `fem_at(centroid)` holds are FEM cells (docs/theory.md §19): no points, full in the grid.
 inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinematics kinematics,
-                                         const std::function<int(const Vec3&)>& body_at) {
+                                         const std::function<int(const Vec3&)>& body_at,
+                                         const std::function<bool(const Vec3&)>& fem_at = {}) {
   auto block = std::make_unique<Block>();
   block->mesh = generate_structured_mesh(spec);
   block->topology = build_mesh_topology(block->mesh);
@@ -49,6 +51,7 @@ inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinemat
     block->materials.push_back(block->owned.back().get());
   }
   const bool radial = kinematics == Kinematics::Axisymmetric;
+  std::vector<char> fem(block->mesh.num_cells(), 0);
   dispatch_cell_type(block->mesh.cell_type, [&](auto e) {
     using E = decltype(e);
     constexpr CellType T = cell_type_of<E>;
@@ -57,7 +60,8 @@ inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinemat
       Vec3 centroid = Vec3::Zero();
       centroid.head<E::dim>() = map_to_physical<T>(X, E::centroid());
       const int body = body_at(centroid);
-      if (body < 0) continue;
+      fem[c] = fem_at && fem_at(centroid);
+      if (body < 0 || fem[c]) continue;
       for (int q = 0; q < E::quadrature_size(); ++q) {
         const typename E::Local xi = E::quadrature_point(q);
         Vec3 x = Vec3::Zero(), local = Vec3::Zero();
@@ -72,6 +76,7 @@ inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinemat
   });
   GridSettings settings;
   settings.kinematics = kinematics;
+  if (fem_at) settings.fem_cells = fem;
   block->grid =
       std::make_unique<GridSystem>(block->mesh, block->topology, block->materials, settings);
   block->grid->initialise(block->points);

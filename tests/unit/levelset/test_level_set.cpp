@@ -99,6 +99,19 @@ TEST(LevelSet, CountsOnlyTheSelectedBodies) {
   }
 }
 
+TEST(LevelSet, CountsFemCellsAsFilled) {
+  // The block fills y < 3, its cells below y = 2 FEM cells with no points (docs/theory.md §19.4):
+  // the level set is the whole block's, +1/2 on the FEM-MPM interface y = 2 rather than 0 (the
+  // false surface that counting the points alone would give there).
+  auto block = fill_block(
+      block_mesh(CellType::Quad4, {3, 5, 1}), Kinematics::PlaneStrain,
+      [](const Vec3& x) { return x.y() < 3.0 ? 0 : -1; },
+      [](const Vec3& x) { return x.y() < 2.0; });
+  ASSERT_EQ(block->points.size(), 3 * 4);  // one row of MPM cells, four points each
+  const LevelSet phi(*block->grid, block->points);
+  expect_closed_form(*block, phi, 3.0);
+}
+
 TEST(LevelSet, InterpolatesInACellAndItsGradientPointsIntoTheBody) {
   auto block = fill_block(block_mesh(CellType::Quad4, {4, 4, 1}), Kinematics::PlaneStrain,
                           [](const Vec3& x) { return x.y() < 2.0 ? 0 : -1; });

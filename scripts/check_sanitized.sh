@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The code checks CI runs after the test suite (.ci/run):
+#  1. the libraries and the unit tier built with clang, AddressSanitizer and UndefinedBehavior-
+#     Sanitizer (build-sanitize/), and the unit tier run under them: any report fails it;
+#  2. the fuzz targets of fuzz/ (the model reader with the model's validation and build, and the
+#     Gmsh mesh reader), each run for FUZZ_SECONDS (default 60) from the examples' files; a crash,
+#     a sanitizer report, a hang or an exception other than an input error fails it, and the
+#     input that did it is left in build-sanitize/fuzz/ (crash-*, timeout-*, leak-*).
+# About 25 minutes on 2 cores from nothing built (docs/performance.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --checks
+seconds="${FUZZ_SECONDS:-60}"
+CC=clang CXX=clang++ cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DGEOMPM_SANITIZE=ON -DGEOMPM_FUZZ=ON > build-sanitize.log 2>&1 || {
+  cat build-sanitize.log; exit 1; }
+rm -f build-sanitize.log
+mapfile -t unit_targets < <(ninja -C build-sanitize -t targets all |
+                            sed -n 's/^\(test_unit_[a-z_]*\): phony$/\1/p')
+cmake --build build-sanitize -j "$(nproc)" --target geompm "${unit_targets[@]}" \
+  fuzz_model_reader fuzz_mesh_reader
+
+# Third-party libraries keep some allocations for the process's lifetime (MPI, PETSc, Gmsh,
+# OpenMP): not ours to report.
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/leak_suppressions.txt:print_suppressions=0"
+export ASAN_OPTIONS="detect_odr_violation=0:abort_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export OMP_WAIT_POLICY=passive
+(cd build-sanitize && ctest -L unit --output-on-failure -j "$(nproc)" --timeout 1800)
+
+mkdir -p build-sanitize/fuzz
+for target in fuzz_model_reader fuzz_mesh_reader; do
+  corpus="build-sanitize/fuzz/${target#fuzz_}_corpus"
+  mkdir -p "$corpus"
+  case "$target" in
+    fuzz_model_reader) cp examples/*/*.yaml "$corpus"/ ;;
+    fuzz_mesh_reader) cp examples/*/*.msh "$corpus"/ ;;
+  esac
+  echo "fuzzing ${target#fuzz_} for ${seconds} s"
+  (cd build-sanitize/fuzz &&
+   ../fuzz/"$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
+     -max_len=16384 -print_final_stats=1 "${corpus#build-sanitize/fuzz/}" 2>&1 | tail -25)
+done
+echo "sanitizer and fuzzing checks: clean"
