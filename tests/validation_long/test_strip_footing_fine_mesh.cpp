@@ -32,8 +32,8 @@ TEST(StripFootingValidation, SteelBlockOnBOver40IsInTheBandAtATenthOfB) {
 }
 
 TEST(StripFootingValidation, RigidFootingsOnBOver40EndWithinOnePercentOfPrandtl) {
-  for (const char* example :
-       {"strip_footing/strip_footing_smooth.yaml", "strip_footing/strip_footing_rigid_rough.yaml"}) {
+  for (const char* example : {"strip_footing/strip_footing_smooth.yaml",
+                              "strip_footing/strip_footing_rigid_rough.yaml"}) {
     const auto& f = fine_strip(example);
     const double q = f.q_at(0.1), mean = f.q_mean(0.08, 0.1);
     std::printf("[%s, h = B/40] q/s_u = %.3f at 0.1 B, %.3f over 0.08-0.1 B\n", example, q, mean);

@@ -168,10 +168,9 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
     // The empty cells' stiffness of the rigid-footing examples (docs/validation.md §4 (iv)): with
     // 1e-6 of the soil's E the air nodes beside the footing's edge keep Newton's corrections from
     // converging on the sharp cone (the rough run stops at 0.00048 B).
-    return meshed(
-        testing::with_numerics(rigid_footing_instead(ngamma_rigid_plastic(1), contact),
-                               "empty_cell_stiffness", "1.0e-4"),
-        5, Mesh::Crossed);
+    return meshed(testing::with_numerics(rigid_footing_instead(ngamma_rigid_plastic(1), contact),
+                                         "empty_cell_stiffness", "1.0e-4"),
+                  5, Mesh::Crossed);
   };
   const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", -0.2, 1.0);
   const auto smooth = run_push(text("smooth"), "tri_ngamma_rigid_smooth", -0.2, 1.0);
