@@ -53,7 +53,8 @@ class ByteWriter {
 
  private:
   void raw(const void* data, std::size_t size) {
-    bytes_.append(static_cast<const char*>(data), size);
+    // An empty container's data() may be null, which append and memcpy must not see (UBSan).
+    if (size > 0) bytes_.append(static_cast<const char*>(data), size);
   }
   template <class T, std::size_t N>
   void put_container(const std::array<T, N>& values) {
@@ -120,6 +121,7 @@ class ByteReader {
  private:
   void raw(void* data, std::size_t size) {
     if (size > remaining()) fail_short(size);
+    if (size == 0) return;  // an empty container's data() may be null (UBSan)
     std::memcpy(data, bytes_.data() + at_, size);
     at_ += size;
   }
