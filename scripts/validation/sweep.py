@@ -43,11 +43,20 @@ def cases(design):
     return [dict(zip(keys, values)) for values in grid]
 
 
+def width_and_strength(case, millimetres):
+    """B and s_u in the model's units: m and kPa, or mm and N/mm^2."""
+    return (float(case["B"]) * (1000.0 if millimetres else 1.0),
+            float(case["su"]) * (1e-3 if millimetres else 1.0))
+
+
+def q_over_su(case, force, millimetres):
+    """q/s_u from the contact force: a half strip's per unit length, a circle's per radian."""
+    B, su = width_and_strength(case, millimetres)
+    return (8 * force / B**2 if case["shape"] == "circle" else 2 * force / B) / su
+
+
 def model_text(case, newton, numerics, millimetres):
-    length = 1000.0 if millimetres else 1.0  # m -> mm
-    stress = 1e-3 if millimetres else 1.0    # kPa -> N/mm^2
-    B = float(case["B"]) * length
-    su = float(case["su"]) * stress
+    B, su = width_and_strength(case, millimetres)
     circle = case["shape"] == "circle"
     fields = {
         "TITLE": name(case), "KINEMATICS": "axisymmetric" if circle else "plane_strain",
@@ -87,13 +96,10 @@ def reading(case, returncode, rows, millimetres):
     """(settlement / B reached, q / s_u there, most Newton iterations, verdict)."""
     if not rows:
         return 0.0, float("nan"), 0, "no result"
-    length = 1000.0 if millimetres else 1.0
-    B = float(case["B"]) * length
-    su = float(case["su"]) * (1e-3 if millimetres else 1.0)
+    B, _ = width_and_strength(case, millimetres)
     last = rows[-1]
     s = -float(last["settlement"]) / B
-    force = float(last["force"])
-    q = (8 * force / B**2 if case["shape"] == "circle" else 2 * force / B) / su
+    q = q_over_su(case, float(last["force"]), millimetres)
     most = max(int(float(r["newton_iterations"])) for r in rows)
     reference = REFERENCE[(case["shape"], case["base"])]
     finished = returncode == 0 and s > 0.1 - 1e-9

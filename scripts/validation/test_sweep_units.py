@@ -12,11 +12,9 @@ def curve(case, millimetres, work):
     args = type("Args", (), {"newton": "", "numerics": "", "binary": os.environ["GEOMPM_BINARY"],
                              "units": "N-mm" if millimetres else "kN-m"})
     _, returncode, rows = sweep.run(case, args, work)
-    length = 1000.0 if millimetres else 1.0
-    B = float(case["B"]) * length
-    su = float(case["su"]) * (1e-3 if millimetres else 1.0)
-    scale = (8 / B**2 if case["shape"] == "circle" else 2 / B) / su
-    return returncode, [(-float(r["settlement"]) / B, scale * float(r["force"])) for r in rows]
+    B, _ = sweep.width_and_strength(case, millimetres)
+    return returncode, [(-float(r["settlement"]) / B,
+                         sweep.q_over_su(case, float(r["force"]), millimetres)) for r in rows]
 
 
 class UnitsDoNotMatter(unittest.TestCase):
