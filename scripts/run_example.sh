@@ -4,10 +4,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 echo "Building the geompm executable only (no tests or benchmarks): the first build takes about" \
-  "5 minutes on two cores, a rebuild seconds."
+  "4 minutes on two cores, a rebuild seconds."
 bash scripts/build.sh geompm
 example=examples/strip_footing/strip_footing.yaml
-echo "Running the main example (about a minute)."
+echo "Running the main example (about 10 seconds)."
 ./build/geompm check "$example"
 ./build/geompm run "$example" --output results/strip_footing
 echo "ParaView: results/strip_footing/points.pvd (plastic zone: colour by 'plastic' or" \

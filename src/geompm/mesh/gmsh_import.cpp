@@ -9,7 +9,9 @@
 #include <limits>
 #include <unordered_map>
 
+#include "geompm/core/byte_archive.hpp"
 #include "geompm/core/error.hpp"
+#include "geompm/core/isolated_call.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_session.hpp"
 
@@ -220,6 +222,41 @@ Mesh read_open_model(const std::string& path, int dimension) {
   return mesh;
 }
 
+Mesh read_file_unvalidated(const SourceLocation& where, const std::string& path, int dimension) {
+  GmshSession session;
+  try {
+    gmsh::open(path);
+  } catch (...) {
+    throw InputError(where, "cannot be read as a Gmsh mesh (" + current_exception_message() +
+                                "); expected a .msh file in format 2 or 4");
+  }
+  try {
+    return read_open_model(path, dimension);
+  } catch (const InputError&) {
+    throw;
+  } catch (...) {
+    throw InputError(where, "cannot be read as a Gmsh mesh (" + current_exception_message() + ")");
+  }
+}
+
+void put_mesh(ByteWriter& writer, const Mesh& mesh) {
+  writer.put(mesh.cell_type);
+  writer.put(mesh.nodes);
+  writer.put(mesh.connectivity);
+  writer.put(mesh.cell_groups);
+  writer.put(mesh.node_groups);
+}
+
+Mesh get_mesh(ByteReader& reader) {
+  Mesh mesh;
+  reader.get(mesh.cell_type);
+  reader.get(mesh.nodes);
+  reader.get(mesh.connectivity);
+  reader.get(mesh.cell_groups);
+  reader.get(mesh.node_groups);
+  return mesh;
+}
+
 }  // namespace
 
 Mesh mesh_from_gmsh_model(const std::string& what, int dimension) {
@@ -240,24 +277,15 @@ Mesh read_gmsh_mesh(const std::string& path, int dimension) {
   if (!std::filesystem::is_regular_file(path, error))
     throw InputError(where, "is not a regular file; expected a Gmsh mesh file (.msh)");
 
-  Mesh mesh;
-  {
-    GmshSession session;
-    try {
-      gmsh::open(path);
-    } catch (...) {
-      throw InputError(where, "cannot be read as a Gmsh mesh (" + current_exception_message() +
-                                  "); expected a .msh file in format 2 or 4");
-    }
-    try {
-      mesh = read_open_model(path, dimension);
-    } catch (const InputError&) {
-      throw;
-    } catch (...) {
-      throw InputError(where,
-                       "cannot be read as a Gmsh mesh (" + current_exception_message() + ")");
-    }
-  }
+  // Gmsh's reader can crash on a damaged file (found by fuzzing: an MSH4 $Nodes section whose
+  // counts do not match its blocks), so it reads in a child process (core/isolated_call.hpp).
+  const std::string bytes = call_isolated(path, [&] {
+    ByteWriter writer;
+    put_mesh(writer, read_file_unvalidated(where, path, dimension));
+    return writer.take();
+  });
+  ByteReader reader(bytes, path);
+  Mesh mesh = get_mesh(reader);
   try {
     validate_mesh(mesh, path);
   } catch (const InputError& error) {

@@ -267,6 +267,20 @@ TEST(GmshImportTest, ImportIsRepeatableAfterAnError) {
   }
 }
 
+TEST(GmshImportTest, FileThatCrashesGmshsReaderIsAnInputError) {
+  // Found by fuzz/fuzz_mesh_reader: the footing example's mesh with a block of node coordinates
+  // repeated, so that the $Nodes section no longer matches its counts. Gmsh 4.8's MSH4 reader
+  // reads out of bounds on it (a segmentation fault); geompm reads meshes in a child process, so
+  // this is bad input with a message, and the next read works.
+  const std::string damaged =
+      std::string(GEOMPM_SOURCE_DIR) + "/tests/unit/mesh/data/msh4_nodes_block_repeated.msh";
+  const std::string message = import_error(damaged, 2);
+  EXPECT_NE(message.find("damaged"), std::string::npos) << message;
+  TemporaryDirectory directory;
+  const std::string good = write_file(directory, "good.msh", square_file("0", two_triangles));
+  EXPECT_EQ(read_gmsh_mesh(good, 2).num_cells(), 2);
+}
+
 TEST(GmshImportTest, NumericLocaleIsLeftAsItWas) {
   // Gmsh switches LC_NUMERIC to "C"; a session must put the caller's setting back.
   const std::string before = std::setlocale(LC_NUMERIC, nullptr);
