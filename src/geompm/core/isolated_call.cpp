@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <exception>
 
@@ -40,7 +41,19 @@ std::string read_all(int fd) {
   }
 }
 
+// Set by a sanitizer runtime (the fuzz targets' builds), absent otherwise.
+extern "C" void __sanitizer_set_death_callback(void (*callback)()) __attribute__((weak));
+
+/// The child dies of what it reads, quietly: with the default action of the signals of a crash,
+/// not a sanitizer's or a fuzzer's handler, which would report the child's death as the whole
+/// program's (a fuzzer would save the input as a crash of its own).
+void die_quietly_on_a_crash() {
+  for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+  if (__sanitizer_set_death_callback != nullptr) __sanitizer_set_death_callback(nullptr);
+}
+
 [[noreturn]] void run_child(int fd, const std::function<std::string()>& work) {
+  die_quietly_on_a_crash();
   std::string answer;
   try {
     answer = answer_result + work();
