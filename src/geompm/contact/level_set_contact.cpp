@@ -224,7 +224,12 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
     const ContactSegment& segment = all_[piece];
     for (int c = 0; c < 3; ++c)
       k.start[c] += segment.measure / k.measure * pair_.multipliers[piece][c];
-    const bool tracked = pair_.in_grid[piece];
+    // Tracked: the piece touched at the end of the last step. An open piece is measured by the
+    // level set again: its gap tracked along the structure's normal n would close only at the
+    // rate n . du, slower than the soil's surface approaches where that surface is not normal to
+    // n (a cone's face, a pipe's flank: contact found late by 1 / cos of the angle between them).
+    const bool seen = pair_.in_grid[piece],
+               tracked = seen && pair_.state[piece] != ContactState::Open;
     for (const ContactGaussPoint& q : segment.points) {
       auto where = locator_.locate(q.x, hint);
       if (!where) return false;
@@ -236,17 +241,20 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
       for (Index node : nodes)
         if (grid_.node_to_active()[node] < 0) return false;  // outside the step's grid
       h = std::max(h, here);
-      // A piece that was in the grid at the end of the last step starts where it was then,
-      // touching or at its gap (eq. 18.2): the level set, smeared over a cell, would place the
-      // soil's surface up to a fraction of a cell away, and a piece at the edge of the contact
-      // would open and close from step to step by that much.
+      // A piece that touched at the end of the last step starts where it was then (eq. 18.2):
+      // the level set, smeared over a cell, would place the soil's surface up to a fraction of a
+      // cell away, and a piece at the edge of the contact would open and close by that much.
       const double w = q.weight / k.measure;
       if (tracked) {
         k.p0 += w * pair_.penetration[piece];
       } else {
         const double phi = level_set_.value(where->cell, where->xi);
         const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
-        k.p0 += w * phi / std::max(gradient.norm(), 0.5 / here);
+        const double depth = phi / std::max(gradient.norm(), 0.5 / here);
+        // Open at the end of the last step: the smeared level set may bring it to the surface,
+        // not past it (a piece at the edge of the contact would otherwise close from step to
+        // step by a fraction of a cell).
+        k.p0 += w * (seen ? std::min(depth, 0.0) : depth);
       }
       const auto along = [&](const Vec3& c) {
         return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
