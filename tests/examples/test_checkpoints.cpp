@@ -258,6 +258,19 @@ TEST_F(Checkpoints, ARoughRigidFootingResumesWithItsStickAnchors) {
   EXPECT_TRUE(Contains(resume_and_compare(), "phase 'push', step 2,"));
 }
 
+// A coupled model (examples/coupling: MPM near the footing, FEM beyond, docs/theory.md §19)
+// carries the FEM region's Gauss points and the moved mesh from step to step. Killed in its
+// second checkpoint (step 4), it resumes from step 2 with both and ends as the uninterrupted run.
+TEST_F(Checkpoints, ACoupledModelResumesWithItsFemRegionAndMovedMesh) {
+  const std::string model = replace_once(example_text("coupling/strip_footing_coupled.yaml"),
+                                         "duration: 1.0", "duration: 0.2");
+  run_reference(model);
+  write("run.yaml", model);
+  const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "2"});
+  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+  EXPECT_TRUE(Contains(resume_and_compare(), "step 2,"));
+}
+
 // A surface load (docs/theory.md §16) writes the boundary series (boundary.pvd), which its
 // checkpoint carries: killed in its second checkpoint (step 4), it resumes from step 2 and ends
 // with the same boundary files as a run that never stopped.
