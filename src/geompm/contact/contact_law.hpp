@@ -46,4 +46,19 @@ struct ContactEquations {
 ContactEquations contact_equations(const ContactLaw& law, double scale, double p, double s,
                                    double l_n, double l_t, double closed = 0.0);
 
+/// The two tangential equations of a segment in 3D, where the shear is a vector (eq. 18.7a):
+/// it sticks while |l_t + s| <= b (s = 0) and slips along the trial direction,
+/// l_t = b (l_t + s) / |l_t + s|, so that the shear's size is the bound whichever way the
+/// structure slides. Derivatives with respect to (p, s_0, s_1, l_n, l_t0, l_t1). Only where the
+/// bound is finite (adhesion, friction) and the segment touches; otherwise, each tangent on its
+/// own (contact_equations) is the same law.
+struct TangentialPair {
+  double residual[2] = {0.0, 0.0};
+  double d[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}};
+  ContactState state = ContactState::Stick;
+};
+
+TangentialPair tangential_pair(const ContactLaw& law, double scale, double p, const double s[2],
+                               double l_n, const double l_t[2]);
+
 }  // namespace geompm

@@ -315,6 +315,26 @@ double LevelSetContact::penetration(const Vector& du, std::size_t k) const {
   return p;
 }
 
+TangentialPair LevelSetContact::tangential_rows(const ContactLaw& law, double scale, double p,
+                                                const double slip[2], double l_n,
+                                                const double l_t[2],
+                                                const ContactEquations e[2]) const {
+  const bool bounded = law.tangential == TangentialContact::Adhesion ||
+                       law.tangential == TangentialContact::Friction;
+  if (tangents_ == 2 && bounded && e[0].state != ContactState::Open)
+    return tangential_pair(law, scale, p, slip, l_n, l_t);
+  TangentialPair rows;  // each tangent's own equation, in the pair's layout
+  for (int t = 0; t < tangents_; ++t) {
+    rows.residual[t] = e[t].tangential;
+    rows.d[t][0] = e[t].tangential_d[0];
+    rows.d[t][1 + t] = e[t].tangential_d[1];
+    rows.d[t][3] = e[t].tangential_d[2];
+    rows.d[t][4 + t] = e[t].tangential_d[3];
+  }
+  rows.state = e[0].state;
+  return rows;
+}
+
 bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) {
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     const Kinematics& s = segments_[k];
@@ -328,8 +348,9 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
     const double l_n = multiplier(du, k, 0);
     const Index n_dof = dofs_.dof(field_, Index(k), 0);
     const double cA = s.scale * s.measure;
-    // The normal equation, then one tangential equation per tangent (eq. 18.4-18.7; in 3D each
-    // tangent on its own).
+    // The normal equation, then the tangential ones (eq. 18.4-18.7): in 3D each tangent on its
+    // own where that is the same law (smooth, rough), the shear as a vector where it is bounded
+    // (adhesion, friction: eq. 18.7a).
     ContactEquations e[2];
     double l_t[2] = {0.0, 0.0};
     ContactLaw law = pair_.law;
@@ -338,13 +359,16 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
       if (t < tangents_) l_t[t] = multiplier(du, k, 1 + t);
       e[t] = contact_equations(law, s.scale, p, slip[t], l_n, l_t[t], kClosed * s.cell);
     }
-    state_[k] = e[0].state;
+    const TangentialPair rows = tangential_rows(law, s.scale, p, slip, l_n, l_t, e);
+    state_[k] = e[0].state == ContactState::Open ? ContactState::Open
+                : tangents_ == 2                 ? rows.state
+                                                 : e[0].state;
     forces.internal(n_dof) += cA * e[0].normal;
     for (std::size_t j = 0; j < s.dofs.size(); ++j)
       forces.internal(s.dofs[j]) +=
           cA * (l_n * s.dp[j] + l_t[0] * s.ds[j][0] + l_t[1] * s.ds[j][1]);
     for (int t = 0; t < tangents_; ++t)
-      forces.internal(dofs_.dof(field_, Index(k), 1 + t)) += cA * e[t].tangential;
+      forces.internal(dofs_.dof(field_, Index(k), 1 + t)) += cA * rows.residual[t];
     if (!tangent) continue;
     const auto put = [&](Index row, Index col, double v) {
       if (v != 0.0) add_to_tangent(*tangent, dofs_, row, col, v);
@@ -354,16 +378,17 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
       put(n_dof, s.dofs[j], cA * e[0].normal_d[0] * s.dp[j]);
     }
     put(n_dof, n_dof, cA * e[0].normal_d[2]);
+    // Row t: derivatives with respect to (p, s_0, s_1, l_n, l_t0, l_t1).
     for (int t = 0; t < tangents_; ++t) {
       const Index t_dof = dofs_.dof(field_, Index(k), 1 + t);
-      const ContactEquations& et = e[t];
+      const double* d = rows.d[t];
       for (std::size_t j = 0; j < s.dofs.size(); ++j) {
         put(s.dofs[j], t_dof, cA * s.ds[j][t]);
-        put(t_dof, s.dofs[j],
-            cA * (et.tangential_d[0] * s.dp[j] + et.tangential_d[1] * s.ds[j][t]));
+        put(t_dof, s.dofs[j], cA * (d[0] * s.dp[j] + d[1] * s.ds[j][0] + d[2] * s.ds[j][1]));
       }
-      put(t_dof, n_dof, cA * et.tangential_d[2]);
-      put(t_dof, t_dof, cA * et.tangential_d[3]);
+      put(t_dof, n_dof, cA * d[3]);
+      for (int u = 0; u < tangents_; ++u)
+        put(t_dof, dofs_.dof(field_, Index(k), 1 + u), cA * d[4 + u]);
     }
   }
   return true;

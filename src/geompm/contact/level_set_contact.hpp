@@ -60,6 +60,11 @@ class LevelSetContact final : public Contribution {
   double multiplier(const Vector& du, std::size_t k, int component) const;
   /// Segment k's mean penetration p at the increment du (eq. 18.3).
   double penetration(const Vector& du, std::size_t k) const;
+  /// A segment's tangential equations with their derivatives with respect to (p, s_0, s_1, l_n,
+  /// l_t0, l_t1): the vector law where the shear is bounded in 3D, else each tangent's own `e`.
+  TangentialPair tangential_rows(const ContactLaw& law, double scale, double p,
+                                 const double slip[2], double l_n, const double l_t[2],
+                                 const ContactEquations e[2]) const;
   /// Throws RunError if mesh cell `cell`, which the surface at x reaches, is an FEM cell.
   void refuse_fem_cell(Index cell, const Vec3& x) const;
   std::optional<Location> soil_cell(const Vec3& x, const Vec3& normal, double h, Index cell) const;

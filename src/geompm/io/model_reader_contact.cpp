@@ -50,9 +50,6 @@ spec::Contact read_contact(const yaml::Node& node, const Context& context) {
         "of the soil's s_u)");
   if (auto friction = parameter("friction", "friction")) c.friction = read_positive(*friction);
   if (auto cap = parameter("cap", "friction")) c.cap = read_positive(*cap);
-  if (context.dimension == 3 && (c.tangential == "adhesion" || c.tangential == "friction"))
-    section.node().fail(fmt::format(
-        "tangential: {} is not yet supported in 3D (smooth and rough are)", c.tangential));
   if (auto bodies = section.find("bodies"))
     for (const yaml::Node& body : bodies->items()) {
       const std::string name = body.text();

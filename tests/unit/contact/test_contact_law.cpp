@@ -75,6 +75,59 @@ TEST(ContactLaw, DerivativesMatchFiniteDifferences) {
     }
 }
 
+// The 3D law for a bounded shear (eq. 18.7a): a vector that sticks inside the bound and slips
+// along the trial direction with the bound's size, so that dragging diagonally does not give
+// sqrt(2) x mu (each tangent bounded on its own would).
+TEST(ContactLaw, ThreeDimensionalShearSlipsAtTheBoundAlongTheTrialDirection) {
+  const ContactLaw law = friction(0.3);
+  const double slip[2] = {0.03, 0.04}, s0[2] = {0.0, 0.0};
+  // Slipping diagonally with l_t = mu l_n along (3, 4) / 5 is a root ...
+  const double along[2] = {0.3 * 0.6, 0.3 * 0.8};
+  TangentialPair e = tangential_pair(law, 1.0, 0.0, slip, 1.0, along);
+  EXPECT_EQ(e.state, ContactState::Slip);
+  EXPECT_NEAR(e.residual[0], 0.0, 1e-15);
+  EXPECT_NEAR(e.residual[1], 0.0, 1e-15);
+  // ... mu l_n on each tangent (size sqrt(2) mu l_n) is not.
+  const double each[2] = {0.3, 0.3};
+  e = tangential_pair(law, 1.0, 0.0, slip, 1.0, each);
+  EXPECT_GT(std::hypot(e.residual[0], e.residual[1]), 0.1);
+  // A shear inside the bound with no slip sticks.
+  const double inside[2] = {0.1, -0.2};
+  e = tangential_pair(law, 1.0, 0.0, s0, 1.0, inside);
+  EXPECT_EQ(e.state, ContactState::Stick);
+  EXPECT_EQ(e.residual[0], 0.0);
+  EXPECT_EQ(e.residual[1], 0.0);
+  // Along one tangent it is the 2D law.
+  const double s1[2] = {0.05, 0.0}, l1[2] = {0.25, 0.0};
+  e = tangential_pair(law, 1.0, 0.0, s1, 1.0, l1);
+  EXPECT_NEAR(e.residual[0], contact_equations(law, 1.0, 0.0, 0.05, 1.0, 0.25).tangential, 1e-15);
+  EXPECT_EQ(e.residual[1], 0.0);
+}
+
+TEST(ContactLaw, ThreeDimensionalShearDerivativesMatchFiniteDifferences) {
+  const ContactLaw laws[] = {ContactLaw{TangentialContact::Adhesion, 0.7}, friction(0.4),
+                             friction(0.4, 0.5)};
+  // (p, s_0, s_1, l_n, l_t0, l_t1): stick, and slip in several directions.
+  const double at[][6] = {{0.01, 0.0, 0.0, 1.0, 0.1, -0.1},
+                          {0.01, 0.3, 0.2, 1.0, 0.2, 0.1},
+                          {0.02, -0.4, 0.1, 2.0, -0.3, 0.2},
+                          {0.0, 0.05, -0.6, 1.5, 0.0, -0.4}};
+  const double h = 1e-7;
+  for (const ContactLaw& law : laws)
+    for (const auto& x : at) {
+      const TangentialPair e = tangential_pair(law, 1.3, x[0], &x[1], x[3], &x[4]);
+      for (int k = 0; k < 6; ++k) {
+        double y[6] = {x[0], x[1], x[2], x[3], x[4], x[5]};
+        y[k] += h;
+        const TangentialPair f = tangential_pair(law, 1.3, y[0], &y[1], y[3], &y[4]);
+        ASSERT_EQ(f.state, e.state);
+        for (int i = 0; i < 2; ++i)
+          EXPECT_NEAR((f.residual[i] - e.residual[i]) / h, e.d[i][k], 1e-6)
+              << "row " << i << " column " << k;
+      }
+    }
+}
+
 // A block on a rigid base, pressed down by N and pulled along by T, held by springs of
 // stiffness k in both directions from where it starts a gap g above the base; its displacement
 // (u, v) and the multipliers (l_n, l_t) solved by semi-smooth Newton with scale c. Penetration
