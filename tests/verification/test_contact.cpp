@@ -39,6 +39,30 @@ TEST(Contact, PatchTestPassesAUniformPressureExactly) {
   EXPECT_NEAR(run.column("base_reaction").back(), F, 1e-6 * F);
 }
 
+TEST(Contact, APlateThatStartsEmbeddedTakesTheSoilsPlace) {
+  // The patch test's plate (1 m wide, the block's width) placed a cell deep into the block: the
+  // block's points inside it are not seeded (16 of 64), the soil starts around it, and one step
+  // of F = 25 kN/m passes on sigma_yy = -F / B exactly, at the settlement of a confined Hencky
+  // column 0.75 m high (docs/theory.md §17.1).
+  auto text = testing::example_text("structures/contact_patch.yaml");
+  text = testing::replace_once(
+      text, "shape: {type: footing, width: 1, height: 0.1, position: [0.5, 1.0]}",
+      "shape: {type: footing, width: 1, height: 0.5, position: [0.5, 0.75]}");
+  auto spec = read_model_from_string(text, "embedded_patch.yaml");
+  spec.phases[0].duration = 0.25;  // one step
+  const auto run = testing::run_spec(spec, "contact_embedded_patch");
+  EXPECT_EQ(run.model->seeds_inside_structures, (std::vector<Index>{16}));
+  const MaterialPoints& points = run.model->points;
+  ASSERT_EQ(points.size(), 48);
+  const double F = 25.0, H = 0.75, E = 10000, nu = 0.3;
+  for (Index p = 0; p < points.size(); ++p)
+    EXPECT_NEAR(points.stress[p](1, 1), -F, 1e-9 * F) << "point " << p;
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double l = 1.0 + run.column("plate_uy").back() / H;
+  EXPECT_NEAR(M * std::log(l) / l, -F, 1e-8 * F);
+  EXPECT_NEAR(run.column("contact_fy").back(), F, 1e-9 * F);
+}
+
 TEST(Contact, PatchTestSettlesAsAHenckyColumnStepAfterStep) {
   // Four steps: the plate follows the block's surface as it moves into the top row of cells
   // (persistent contact, eq. 18.2), and settles as the confined Hencky column under F. (The

@@ -22,6 +22,7 @@
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/seeding.hpp"
 #include "geompm/structures/structure_builder.hpp"
+#include "geompm/structures/structure_distance.hpp"
 
 namespace geompm {
 
@@ -261,7 +262,7 @@ void add_body_point(const spec::Model& spec, std::size_t b, const SeedPoint& s, 
 // which none of the bodies before it (`regions` 0..b-1) may hold as well. `regions[b]` is its
 // own.
 void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionTest>& regions,
-               Model& model) {
+               const std::vector<StructureDistance>& structures, Model& model) {
   const spec::Body& body = spec.bodies[b];
   const Mesh& mesh = model.mesh;
   const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
@@ -288,6 +289,12 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
     }
     for (const auto& s : seeds) {
       if (!regions[b].contains(s.position, c)) continue;
+      // A structure that starts inside the soil takes the soil's place (docs/theory.md §17.1).
+      if (std::any_of(structures.begin(), structures.end(),
+                      [&](const StructureDistance& inside) { return inside(s.position) == 0.0; })) {
+        ++model.seeds_inside_structures[b];
+        continue;
+      }
       for (std::size_t other = 0; other < b; ++other)
         if (regions[other].contains(s.position, c))
           throw InputError(
@@ -309,10 +316,13 @@ void seed_bodies(const spec::Model& spec, Model& model) {
   const int dim = mesh.dim();
   const MeshBounds mesh_box = mesh_bounds(mesh);
   std::vector<RegionTest> body_regions;
+  std::vector<StructureDistance> structures;
+  for (const auto& structure : model.structures) structures.emplace_back(structure->mesh());
+  model.seeds_inside_structures.assign(spec.bodies.size(), 0);
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     body_regions.emplace_back(spec.bodies[b].region, mesh, dim);
     check_body_inside_mesh(spec.bodies[b], body_regions.back(), mesh_box, dim);
-    seed_body(spec, b, body_regions, model);
+    seed_body(spec, b, body_regions, structures, model);
   }
 }
 
@@ -525,7 +535,11 @@ std::string describe_model(const Model& model) {
         material += " " + layer.material +
                     (layer.bottom ? fmt::format(" down to {:g},", *layer.bottom) : " below");
     }
-    out += fmt::format("body       {}: {} points, {} per cell, {}\n", body.name, count,
+    const Index inside =
+        b < model.seeds_inside_structures.size() ? model.seeds_inside_structures[b] : 0;
+    const std::string left_out =
+        inside > 0 ? fmt::format(" ({} seeding positions inside structures left out)", inside) : "";
+    out += fmt::format("body       {}: {} points{}, {} per cell, {}\n", body.name, count, left_out,
                        body.points_per_cell, material);
   }
   for (std::size_t k = 0; k < model.point_set_names.size(); ++k) {

@@ -46,6 +46,9 @@ struct Model {
   std::map<std::string, Vec3> footing_displacement;
   double lost_mass = 0.0;  // of points removed after leaving the mesh
   Index lost_points = 0;
+  /// Per body: the seeding positions left out because they lie inside a structure (a structure
+  /// that starts embedded in the soil, "wished in place").
+  std::vector<Index> seeds_inside_structures;
 
   Kinematics kinematics() const { return spec.kinematics; }
   /// What a run changes besides the points (displacements so far, lost points), for a

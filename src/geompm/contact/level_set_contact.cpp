@@ -228,8 +228,7 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
     // level set again: its gap tracked along the structure's normal n would close only at the
     // rate n . du, slower than the soil's surface approaches where that surface is not normal to
     // n (a cone's face, a pipe's flank: contact found late by 1 / cos of the angle between them).
-    const bool seen = pair_.in_grid[piece],
-               tracked = seen && pair_.state[piece] != ContactState::Open;
+    const bool tracked = pair_.in_grid[piece] && pair_.state[piece] != ContactState::Open;
     for (const ContactGaussPoint& q : segment.points) {
       auto where = locator_.locate(q.x, hint);
       if (!where) return false;
@@ -251,10 +250,11 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
         const double phi = level_set_.value(where->cell, where->xi);
         const Vec3 gradient = level_set_.gradient(where->cell, where->xi);
         const double depth = phi / std::max(gradient.norm(), 0.5 / here);
-        // Open at the end of the last step: the smeared level set may bring it to the surface,
-        // not past it (a piece at the edge of the contact would otherwise close from step to
-        // step by a fraction of a cell).
-        k.p0 += w * (seen ? std::min(depth, 0.0) : depth);
+        // Open, or new: the smeared level set may bring it to the surface, not past it. A piece
+        // at the edge of the contact would otherwise close from step to step by a fraction of a
+        // cell, and a structure that starts embedded (the soil seeded around it) would push the
+        // soil out by that much in its first step.
+        k.p0 += w * std::min(depth, 0.0);
       }
       const auto along = [&](const Vec3& c) {
         return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
