@@ -35,9 +35,14 @@ for target in fuzz_model_reader fuzz_mesh_reader; do
   corpus="build-sanitize/fuzz/${target#fuzz_}_corpus"
   mkdir -p "$corpus"
   case "$target" in
-    fuzz_model_reader) cp examples/*/*.yaml "$corpus"/ ;;
-    fuzz_mesh_reader) cp examples/*/*.msh "$corpus"/ ;;
+    fuzz_model_reader) pattern="*.yaml" ;;
+    fuzz_mesh_reader) pattern="*.msh" ;;
   esac
+  # Named by folder and file: two examples' files may share a name (structures/ and
+  # circular_footing/ both have circular_footing_smooth.yaml).
+  for file in examples/*/$pattern; do
+    cp "$file" "$corpus/$(basename "$(dirname "$file")")__$(basename "$file")"
+  done
   echo "fuzzing ${target#fuzz_} for ${seconds} s"
   (cd build-sanitize/fuzz &&
    ../fuzz/"$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
