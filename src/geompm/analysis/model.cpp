@@ -22,7 +22,6 @@
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/seeding.hpp"
 #include "geompm/structures/structure_builder.hpp"
-#include "geompm/structures/structure_distance.hpp"
 
 namespace geompm {
 
@@ -262,7 +261,7 @@ void add_body_point(const spec::Model& spec, std::size_t b, const SeedPoint& s, 
 // which none of the bodies before it (`regions` 0..b-1) may hold as well. `regions[b]` is its
 // own.
 void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionTest>& regions,
-               const std::vector<StructureDistance>& structures, Model& model) {
+               const std::vector<PointLocator>& structures, Model& model) {
   const spec::Body& body = spec.bodies[b];
   const Mesh& mesh = model.mesh;
   const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
@@ -291,7 +290,7 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
       if (!regions[b].contains(s.position, c)) continue;
       // A structure that starts inside the soil takes the soil's place (docs/theory.md §17.1).
       if (std::any_of(structures.begin(), structures.end(),
-                      [&](const StructureDistance& inside) { return inside(s.position) == 0.0; })) {
+                      [&](const PointLocator& inside) { return inside.locate(s.position); })) {
         ++model.seeds_inside_structures[b];
         continue;
       }
@@ -316,8 +315,8 @@ void seed_bodies(const spec::Model& spec, Model& model) {
   const int dim = mesh.dim();
   const MeshBounds mesh_box = mesh_bounds(mesh);
   std::vector<RegionTest> body_regions;
-  std::vector<StructureDistance> structures;
-  for (const auto& structure : model.structures) structures.emplace_back(structure->mesh());
+  std::vector<PointLocator> structures;  // a locator of each structure's cells: inside it or not
+  for (const auto& structure : model.structures) structures.emplace_back(structure->mesh().mesh());
   model.seeds_inside_structures.assign(spec.bodies.size(), 0);
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     body_regions.emplace_back(spec.bodies[b].region, mesh, dim);

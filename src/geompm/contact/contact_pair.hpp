@@ -34,10 +34,9 @@ struct ContactPair {
   std::vector<double> pressure, shear;
   std::vector<ContactState> state;
   std::vector<char> in_grid;
-  /// Per piece in the grid at the last converged step: its group's penetration (eq. 18.2; 0
-  /// when closed, the gap's negative when open), where the next step's starts. The level set
-  /// places the soil's surface only to within a cell: a piece it has not yet seen is all it is
-  /// asked for.
+  /// Per piece in the grid at the last converged step: its group's penetration, where the next
+  /// step's starts if the piece touched (eq. 18.2; 0 when closed). An open piece is measured by
+  /// the level set again, which places the soil's surface only to within a cell.
   std::vector<double> penetration;
   /// Per piece: the structure's surface facet it is part of, and its length or area.
   std::vector<Index> piece_facet;

@@ -360,9 +360,7 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
       e[t] = contact_equations(law, s.scale, p, slip[t], l_n, l_t[t], kClosed * s.cell);
     }
     const TangentialPair rows = tangential_rows(law, s.scale, p, slip, l_n, l_t, e);
-    state_[k] = e[0].state == ContactState::Open ? ContactState::Open
-                : tangents_ == 2                 ? rows.state
-                                                 : e[0].state;
+    state_[k] = rows.state;
     forces.internal(n_dof) += cA * e[0].normal;
     for (std::size_t j = 0; j < s.dofs.size(); ++j)
       forces.internal(s.dofs[j]) +=

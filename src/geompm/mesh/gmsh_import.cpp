@@ -254,6 +254,7 @@ Mesh get_mesh(ByteReader& reader) {
   reader.get(mesh.connectivity);
   reader.get(mesh.cell_groups);
   reader.get(mesh.node_groups);
+  reader.expect_end();
   return mesh;
 }
 
