@@ -23,6 +23,7 @@
 
 #include "cli_support.hpp"
 #include "geompm/io/model_reader.hpp"
+#include "reference_history.hpp"
 
 namespace {
 
@@ -102,14 +103,6 @@ void expect_series(const fs::path& pvd, double final_time, bool starts_with_init
 // The examples.
 
 fs::path source_dir() { return fs::path(GEOMPM_SOURCE_DIR); }
-
-/// tests/reference_histories/<directory>__<model>.csv for examples/<directory>/<model>.yaml.
-fs::path reference_history(const std::string& example) {
-  std::string name = example.substr(0, example.size() - std::string(".yaml").size());
-  const std::size_t slash = name.find('/');
-  if (slash != std::string::npos) name.replace(slash, 1, "__");
-  return source_dir() / "tests" / "reference_histories" / (name + ".csv");
-}
 
 /// Every column of `run` within `tolerance` of `reference`, relative to the column's largest
 /// magnitude in the reference (so that a quantity passing through zero is measured against its
@@ -208,7 +201,7 @@ TEST_P(Example, ChecksAndRuns) {
       << "the history should end at the end of the last phase";
 
   // The same curve as before.
-  const fs::path reference = reference_history(GetParam());
+  const fs::path reference = reference_history_path(GetParam());
   if (std::getenv("GEOMPM_WRITE_REFERENCES")) {
     fs::create_directories(reference.parent_path());
     fs::copy_file(out / "history.csv", reference, fs::copy_options::overwrite_existing);

@@ -104,56 +104,11 @@ TEST(Contact, APlateSlidingUnderFrictionCarriesMuTimesItsNormalForce) {
 }
 
 TEST(Contact, APlateDraggedDiagonallyIn3DSlipsAtMuTimesItsNormalForceAlongItsPath) {
-  // The 3D friction law (docs/theory.md eq. 18.7a): the shear is a vector bounded by mu times
-  // the pressure, slipping opposite to the plate's path along (3, 4) / 5, so the soil holds it
-  // back by mu F = 15 kN as (-9, -12). Each tangent bounded on its own would give (-15, -15).
-  const std::string text = R"(
-title: Plate dragged diagonally under friction (3D)
-analysis: {kinematics: 3d}
-mesh:
-  generate:
-    cell: hex8
-    origin: [0, 0, 0]
-    x: {length: 1, cells: 4}
-    y: {length: 1, cells: 4}
-    z: {length: 1.5, cells: 6}
-materials:
-  soil: {model: linear_elastic, E: 10000, nu: 0.3, density: 0}
-bodies:
-  block: {material: soil, region: {box: {min: [0, 0, 0], max: [1, 1, 1]}}, points_per_cell: 8}
-structures:
-  - name: plate
-    shape: {type: footing, width: 0.5, breadth: 0.5, height: 0.1, position: [0.5, 0.5, 1.0]}
-    density: 1
-    contact: {tangential: friction, friction: 0.3}
-phases:
-  - name: press
-    duration: 1.0
-    time_step: {initial: 0.25, min: 0.001, max: 0.25}
-    structures:
-      plate: {displacement: [0, 0, ~], rotation: [0, 0, 0], force: [~, ~, "-50*t"]}
-    fixities: &supports
-      - {boundary: left, fix: normal}
-      - {boundary: right, fix: normal}
-      - {boundary: front, fix: normal}
-      - {boundary: back, fix: normal}
-      - {boundary: bottom, fix: all}
-  - name: drag
-    duration: 1.0
-    time_step: {initial: 0.1, min: 0.001, max: 0.1}
-    structures:
-      plate: {displacement: ["0.03*t", "0.04*t", ~], rotation: [0, 0, 0], force: [~, ~, -50]}
-    fixities: *supports
-output:
-  history:
-    - {quantity: displacement, structure: plate, component: x, name: plate_ux}
-    - {quantity: displacement, structure: plate, component: y, name: plate_uy}
-    - {quantity: contact_force, structure: plate, component: x, name: contact_fx}
-    - {quantity: contact_force, structure: plate, component: y, name: contact_fy}
-    - {quantity: contact_force, structure: plate, component: z, name: contact_fz}
-)";
-  const auto run =
-      testing::run_spec(read_model_from_string(text, "friction_3d.yaml"), "contact_friction_3d");
+  // examples/structures/contact_friction_3d.yaml. The 3D friction law (docs/theory.md
+  // eq. 18.7a): the shear is a vector bounded by mu times the pressure, slipping opposite to the
+  // plate's path along (3, 4) / 5, so the soil holds it back by mu F = 15 kN as (-9, -12). Each
+  // tangent bounded on its own would give (-15, -15).
+  const auto run = run_scaled("structures/contact_friction_3d.yaml", 1.0, "contact_friction_3d");
   const auto time = run.column("time"), fx = run.column("contact_fx"),
              fy = run.column("contact_fy"), fz = run.column("contact_fz");
   const double F = 50.0, mu = 0.3;

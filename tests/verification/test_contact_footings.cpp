@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "geompm/io/history_writer.hpp"
+#include "reference_history.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
@@ -61,8 +62,7 @@ Curve run_strip(const std::string& example, double push_end, double scale_factor
 
 // An example's committed reference history, q = scale x force against settlement / B.
 Curve reference_curve(const std::string& example, double scale) {
-  const auto path = std::filesystem::path(GEOMPM_SOURCE_DIR) / "tests" / "reference_histories" /
-                    ("structures__" + example + ".csv");
+  const auto path = testing::reference_history_path("structures/" + example + ".yaml");
   const CsvTable table = read_csv(path);
   const std::size_t s = table.column("settlement", path.string()),
                     f = table.column("force", path.string()),

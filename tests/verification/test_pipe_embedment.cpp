@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "geompm/io/history_writer.hpp"
+#include "reference_history.hpp"
 
 namespace geompm {
 namespace {
@@ -51,8 +52,7 @@ struct History {
 };
 
 History reference_history() {
-  const auto path = std::filesystem::path(GEOMPM_SOURCE_DIR) / "tests" / "reference_histories" /
-                    "structures__pipe_embedment.csv";
+  const auto path = testing::reference_history_path("structures/pipe_embedment.yaml");
   const CsvTable table = read_csv(path);
   const std::size_t t = table.column("time", path.string()),
                     w = table.column("embedment", path.string()),
