@@ -43,6 +43,10 @@ inline std::string model(const std::string& file, int n, double push_end = 0.03)
   if (push_end < 0.03)
     text = replace_once(text, "name: push\n    duration: 1.0\n",
                         "name: push\n    duration: " + std::to_string(push_end / 0.03) + "\n");
+  // Pushed beyond 0.015 B the N_q example's top row of points crosses into the empty cells above
+  // the surface, where a point alone in a new cell stalls Newton with standard MPM: the report's
+  // runs use GIMP (the example's own push to 0.01 B does not need it).
+  if (file == "frictional_footing_nq.yaml") text = with_numerics(text, "interpolation", "gimp");
   return strip_mesh(text, n);
 }
 

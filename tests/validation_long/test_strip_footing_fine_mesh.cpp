@@ -11,6 +11,7 @@
 #include <string>
 
 #include "footing_run.hpp"
+#include "measured_settings.hpp"
 #include "strip_mesh.hpp"
 
 namespace geompm {
@@ -18,8 +19,13 @@ namespace {
 
 constexpr double kPrandtl = 2.0 + M_PI;  // q_u / s_u of a rigid strip on Tresca soil
 
+// The examples with the settings they were measured with (measured_settings.hpp).
 const testing::Footing& fine_strip(const std::string& example) {
-  const auto text = testing::strip_mesh(testing::no_vtk(testing::example_text(example)), 20);
+  std::string text = testing::example_text(example);
+  text = example == "strip_footing/strip_footing.yaml"
+             ? testing::as_measured_steel_block(text)
+             : testing::as_measured_rigid_strip(text, example.find("smooth") != std::string::npos);
+  text = testing::strip_mesh(testing::no_vtk(text), 20);
   return testing::run_footing(text, "strip_b40_" + example.substr(example.rfind('/') + 1), -2.0);
 }
 

@@ -63,15 +63,29 @@ int Model::point_set_bit(const std::string& name) const {
   return -1;
 }
 
+namespace {
+
+/// The reference moduli of the materials some point carries: a material only listed (or whose
+/// points have all left the mesh) sets no scale.
+std::vector<double> carried_moduli(const Model& model) {
+  std::vector<char> carried(model.materials.size(), 0);
+  for (const Index m : model.points.material) carried[static_cast<std::size_t>(m)] = 1;
+  std::vector<double> moduli;
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    if (carried[m]) moduli.push_back(model.materials[m]->reference_modulus());
+  return moduli;
+}
+
+}  // namespace
+
 double Model::largest_modulus() const {
-  // Of the materials some point carries: a material only listed (or whose points have all left
-  // the mesh) must not stiffen the empty cells beside the soil.
-  std::vector<char> carried(materials.size(), 0);
-  for (const Index m : points.material) carried[static_cast<std::size_t>(m)] = 1;
-  double E = 0.0;
-  for (std::size_t m = 0; m < materials.size(); ++m)
-    if (carried[m]) E = std::max(E, materials[m]->reference_modulus());
-  return E;
+  const std::vector<double> moduli = carried_moduli(*this);
+  return moduli.empty() ? 0.0 : *std::max_element(moduli.begin(), moduli.end());
+}
+
+double Model::softest_modulus() const {
+  const std::vector<double> moduli = carried_moduli(*this);
+  return moduli.empty() ? 0.0 : *std::min_element(moduli.begin(), moduli.end());
 }
 
 Index body_material_at(const spec::Model& spec, const spec::Body& body, double elevation) {

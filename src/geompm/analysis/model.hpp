@@ -57,9 +57,13 @@ struct Model {
   void load_state(ByteReader& in);
   std::vector<const Material*> material_pointers() const;
   int point_set_bit(const std::string& name) const;  // -1 if unknown
-  /// The largest reference modulus of the materials the points carry (the scale of the empty
-  /// cells' and sparse nodes' stiffness).
+  /// The largest reference modulus of the materials the points carry (the scale of contact's
+  /// multipliers).
   double largest_modulus() const;
+  /// The smallest reference modulus of the materials the points carry: the soil's, the scale of
+  /// the empty cells' and sparse nodes' stiffness (a steel block among the points must not
+  /// stiffen the empty cells beside the soil).
+  double softest_modulus() const;
 };
 
 /// The material (index into spec.materials) of `body` at `elevation` (y in 2D, z in 3D): its one

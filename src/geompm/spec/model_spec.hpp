@@ -394,8 +394,8 @@ struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
   Formulation formulation = Formulation::Displacement;  // default of the materials
   SourceLocation interpolation_source;  // where it was given, for errors found with the mesh
-  double empty_cell_stiffness = 1e-6;   // relative to the largest Young's modulus
-  double sparse_node_stiffness = 0.0;   // relative to the largest Young's modulus (eq. 6.2)
+  double empty_cell_stiffness = 1e-4;   // relative to the softest carried Young's modulus
+  double sparse_node_stiffness = 0.0;   // relative to the same modulus (eq. 6.2)
   double sparse_node_fill = 0.05;       // support fill below which a node gets that spring
   double ghost_penalty = 0.0;           // gamma of the edge cells' face penalty (eq. 6.3)
   double ghost_penalty_fill = 0.5;      // fill up to which an edge cell carries it
@@ -404,7 +404,7 @@ struct Numerics {
   std::string linear_solver = "umfpack";
   std::string petsc_options;                // for experts: PETSc's own options (linear_solver.hpp)
   Index direct_limit = 500000;              // auto: the direct solver below this many unknowns
-  bool mixed_volume_average = true;         // mixed_volume: cell_average (F-bar) or per_point
+  bool mixed_volume_average = false;        // mixed_volume: cell_average (F-bar) or per_point
   bool mixed_field_pressure = false;        // mixed_material_pressure: field (theory §14) or own
   bool mixed_incremental_pressure = false;  // mixed_pressure_equation: incremental or total
   double pressure_stabilisation_floor = 0.0;  // share of the exact projection (theory eq. 11.10)

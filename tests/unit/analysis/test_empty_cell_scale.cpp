@@ -1,6 +1,6 @@
 // The stiffness of the empty parts of cells and of sparse nodes (docs/theory.md §6) is relative
-// to the largest modulus of the materials the points carry: a stiff body (a steel block) sets it,
-// a material that is only listed does not change a run.
+// to the smallest modulus of the materials the points carry, the soil's: neither a stiff body
+// among the points (a steel block) nor a material that is only listed changes it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,13 +27,17 @@ spec::Material unused_steel() {
   return steel;
 }
 
-TEST(EmptyCellScale, IsTheLargestModulusThePointsCarry) {
+TEST(EmptyCellScale, IsTheSmallestModulusThePointsCarry) {
   auto spec = short_smooth_strip();
-  EXPECT_DOUBLE_EQ(build_model(spec)->largest_modulus(), 500.0);
+  EXPECT_DOUBLE_EQ(build_model(spec)->softest_modulus(), 500.0);
   spec.materials.push_back(unused_steel());
-  EXPECT_DOUBLE_EQ(build_model(spec)->largest_modulus(), 500.0);
-  // The steel block of the rough example is a body: its E = 1e5 s_u sets the scale.
+  EXPECT_DOUBLE_EQ(build_model(spec)->softest_modulus(), 500.0);
+  spec.materials.back().parameters.at("E") = 1.0;  // softer, but still no point carries it
+  EXPECT_DOUBLE_EQ(build_model(spec)->softest_modulus(), 500.0);
+  // The steel block of the rough example is a body (E = 1e5 s_u): the clay's 500 s_u stays the
+  // scale, the block's modulus is the largest.
   const auto block = testing::read_example("strip_footing/strip_footing.yaml");
+  EXPECT_DOUBLE_EQ(build_model(block)->softest_modulus(), 500.0);
   EXPECT_DOUBLE_EQ(build_model(block)->largest_modulus(), 1.0e5);
 }
 

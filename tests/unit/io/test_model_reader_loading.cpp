@@ -59,14 +59,14 @@ output:
 
 TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   std::string text =
-      kLoadingModel + "numerics: {mixed_volume: per_point, mixed_material_pressure: field}\n";
+      kLoadingModel + "numerics: {mixed_volume: cell_average, mixed_material_pressure: field}\n";
   const std::string step = "    time_step: 0.1\n";
   text.replace(text.find(step), step.size(),
                step +
                    "    newton: {line_search: 4, energy_line_search: 0.1, predictor: extrapolated, "
                    "extrapolated_patience: 20}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
-  EXPECT_FALSE(model.numerics.mixed_volume_average);
+  EXPECT_TRUE(model.numerics.mixed_volume_average);
   EXPECT_TRUE(model.numerics.mixed_field_pressure);
   EXPECT_FALSE(model.numerics.mixed_incremental_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
@@ -78,7 +78,7 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_EQ(model.phases.at(1).newton.extrapolated_patience, 20);
   EXPECT_EQ(model.phases.at(0).newton.extrapolated_patience, 0);  // half of max_iterations
   const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
-  EXPECT_TRUE(defaults.numerics.mixed_volume_average);
+  EXPECT_FALSE(defaults.numerics.mixed_volume_average);  // per_point
   EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
   const spec::Model incremental = read_model_from_string(
       kLoadingModel + "numerics: {mixed_pressure_equation: incremental}\n", "model.yaml");

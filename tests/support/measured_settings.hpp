@@ -1,0 +1,31 @@
+// The numerics with which the strip footing studies of docs/validation.md §4-§5 were measured,
+// when the strip examples still carried them (until 2026-12-07; the defaults have since become
+// each point its own volume change, 1e-4 of the soil's E in the empty cells and the total pressure
+// equation). A test that asserts one of those measurements sets them, so that it checks the
+// option it was measured with; docs/validation.md gives the defaults' numbers beside them.
+#pragma once
+
+#include <string>
+
+#include "example_text.hpp"
+
+namespace geompm::testing {
+
+/// The steel block of examples/strip_footing/strip_footing.yaml as measured: the cell-averaged
+/// volume change (F-bar) and 1e-6 of the steel's E (2e-4 of the clay's) in the empty cells; its
+/// incremental pressure equation with the fitted start it still carries.
+inline std::string as_measured_steel_block(std::string text) {
+  text = with_numerics(text, "mixed_volume", "cell_average");
+  return with_numerics(text, "empty_cell_stiffness", "2.0e-4");
+}
+
+/// The rigid (penalty) strips of examples/strip_footing/ as measured: the incremental pressure
+/// equation with the fitted start, and for the smooth one the ghost penalty of 1e-3 (its energy
+/// line search it still carries).
+inline std::string as_measured_rigid_strip(std::string text, bool smooth) {
+  text = with_numerics(text, "mixed_pressure_equation", "incremental");
+  text = with_numerics(text, "mixed_pressure_start", "fitted");
+  return smooth ? with_numerics(text, "ghost_penalty", "1.0e-3") : text;
+}
+
+}  // namespace geompm::testing
