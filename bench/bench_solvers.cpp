@@ -8,6 +8,7 @@
 //   GEOMPM_BENCH_CELLS=500 GEOMPM_BENCH_SOLVERS=petsc_gamg GEOMPM_BENCH_REPETITIONS=3
 //     build/bench/bench_solvers                    (one line)
 //   GEOMPM_BENCH_FORMULATION=mixed ...             the mixed p-u block (nu = 0.49)
+//   GEOMPM_BENCH_DIMENSION=3 GEOMPM_BENCH_CELLS=24,50 ...   the 3D block (cells^3 Hex8 cells)
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -46,8 +47,9 @@ struct Row {
 
 // `repetitions` whole steps from the same state; the first, which also pays the solver's
 // one-off costs (PETSc's initialisation, first allocations), is left out.
-Row measure(int cells, Formulation formulation, const std::string& solver, int repetitions) {
-  StepCase c(cells, formulation);
+Row measure(int cells, Formulation formulation, bool three_d, const std::string& solver,
+            int repetitions) {
+  StepCase c(cells, formulation, three_d);
   c.model().spec.numerics.linear_solver = solver;
   c.save_points();
   geompm::bench::reset_peak_resident();
@@ -81,17 +83,20 @@ int main() {
   const char* form = std::getenv("GEOMPM_BENCH_FORMULATION");
   const bool mixed = form && std::string(form) == "mixed";
   const Formulation formulation = mixed ? Formulation::MixedCellAverage : Formulation::Displacement;
+  const char* dimension = std::getenv("GEOMPM_BENCH_DIMENSION");
+  const bool three_d = dimension && std::string(dimension) == "3";
   std::cout << "| cells | points | formulation | solver | step (s) | linear solver (s) | "
                "Newton iterations | Krylov iterations per solve | step peak (B/point) |\n"
                "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& size : cells)
     for (const std::string& solver : solvers) {
       const int n = std::stoi(size);
-      const Row row = measure(n, formulation, solver, repetitions);
+      const Row row = measure(n, formulation, three_d, solver, repetitions);
+      const long points = three_d ? 8L * n * n * (n - 1) : 4L * n * (n - 1);
       std::cout << fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} | {:g} | {:.1f} | {:.0f} |\n",
-                               n, 4 * n * (n - 1), mixed ? "mixed" : "displacement", solver,
-                               row.step, row.linear, row.newton, row.krylov_per_solve,
-                               row.peak_per_point)
+                               three_d ? fmt::format("{}^3", n) : std::to_string(n), points,
+                               mixed ? "mixed" : "displacement", solver, row.step, row.linear,
+                               row.newton, row.krylov_per_solve, row.peak_per_point)
                 << std::flush;
     }
 }

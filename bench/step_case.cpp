@@ -11,6 +11,49 @@ namespace {
 
 constexpr double side = 10.0;  // m: the block is side x side whatever the cell count
 
+spec::Fixity rollers(const char* boundary) {
+  spec::Fixity f;
+  f.boundary = boundary;
+  f.normal_only = true;
+  return f;
+}
+
+/// The 3D block: a cube of cells^3 Hex8 cells, the body filling all but the top layer, 8 points
+/// per cell, rollers on the four sides and a fixed base, gravity along -z.
+spec::Model block_under_gravity_3d(int cells) {
+  spec::Model model;
+  model.title = "benchmark: elastic block under self-weight, 3D";
+  model.kinematics = Kinematics::ThreeD;
+  StructuredMeshSpec mesh;
+  mesh.cell_type = CellType::Hex8;
+  for (int axis = 0; axis < 3; ++axis) mesh.axes[axis] = {AxisSegment{side, cells, 1.0}};
+  model.mesh.generate = mesh;
+  model.materials.push_back({"soil",
+                             "linear_elastic",
+                             {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}},
+                             spec::Formulation::Displacement,
+                             {}});
+  spec::Body body;
+  body.name = "block";
+  body.material = "soil";
+  body.region.kind = spec::Region::Kind::Box;
+  body.region.min = Vec3(0, 0, 0);
+  body.region.max = Vec3(side, side, side - side / cells);  // the top layer stays empty
+  body.points_per_cell = 8;
+  model.bodies.push_back(body);
+  spec::Phase phase;
+  phase.name = "gravity";
+  phase.duration = 1.0;
+  phase.time_step = {1.0, 1.0, 1.0};
+  phase.gravity = spec::Gravity{Vec3(0, 0, -9.81), false};
+  spec::Fixity base;
+  base.boundary = "bottom";
+  base.components = {true, true, true};
+  phase.fixities = {rollers("left"), rollers("right"), rollers("front"), rollers("back"), base};
+  model.phases.push_back(phase);
+  return model;
+}
+
 }  // namespace
 
 const char* formulation_name(Formulation f) {
@@ -31,7 +74,8 @@ const char* formulation_name(Formulation f) {
   return "";
 }
 
-spec::Model block_under_gravity(int cells, Formulation formulation) {
+spec::Model block_under_gravity(int cells, Formulation formulation, bool three_d) {
+  if (three_d) return block_under_gravity_3d(cells);
   spec::Model model;
   model.title = "benchmark: elastic block under self-weight";
   model.kinematics = Kinematics::PlaneStrain;
@@ -85,11 +129,12 @@ spec::Model block_under_gravity(int cells, Formulation formulation) {
   return model;
 }
 
-StepCase::StepCase(int cells, Formulation formulation) : cells_(cells), formulation_(formulation) {
+StepCase::StepCase(int cells, Formulation formulation, bool three_d)
+    : cells_(cells), formulation_(formulation) {
   release_free_heap();
   baseline_resident_ = resident_bytes();
   const std::size_t before = heap_in_use();
-  model_ = build_model(block_under_gravity(cells, formulation));
+  model_ = build_model(block_under_gravity(cells, formulation, three_d));
   phase_ = std::make_unique<PhaseContext>(*model_, model_->spec.phases.front());
   memory_.model = double(heap_in_use() - before);
 }

@@ -41,7 +41,10 @@ const char* formulation_name(Formulation f);
 
 /// The benchmark model with `cells` x `cells` cells (4 (cells - 1) cells material points); in
 /// the mixed formulations the soil is nearly incompressible (nu = 0.49), as undrained clay is.
-spec::Model block_under_gravity(int cells, Formulation formulation = Formulation::Displacement);
+/// With `three_d` the same block in 3D: `cells`^3 Hex8 cells, 8 points per cell below the top
+/// layer (8 (cells - 1) cells^2 points), rollers on the four sides (displacement formulation).
+spec::Model block_under_gravity(int cells, Formulation formulation = Formulation::Displacement,
+                                bool three_d = false);
 
 /// Heap held by each stage of a step, measured the first time the stage is built (0: not yet).
 struct StageMemory {
@@ -52,7 +55,7 @@ struct StageMemory {
 
 class StepCase {
  public:
-  StepCase(int cells, Formulation formulation);
+  StepCase(int cells, Formulation formulation, bool three_d = false);
 
   int cells() const { return cells_; }
   Formulation formulation() const { return formulation_; }

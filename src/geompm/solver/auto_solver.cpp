@@ -12,7 +12,10 @@ class AutoSolver : public LinearSolver {
   explicit AutoSolver(const LinearSolverOptions& options) : options_(options) {}
 
   void analyse(const SparseMatrix& pattern, const LinearSolverHints& hints) override {
-    if (pattern.rows() < options_.direct_limit) {
+    const Index limit = options_.direct_limit >= 0 ? options_.direct_limit
+                        : hints.block_size == 3    ? default_direct_limit_3d
+                                                   : default_direct_limit;
+    if (pattern.rows() < limit) {
       if (!direct_) direct_ = create_umfpack_solver();
       active_ = direct_.get();
     } else {

@@ -84,6 +84,10 @@ class LinearSolver {
 /// took the same linear-solver time (docs/performance.md, note 17). The limit is that size: AMG
 /// where it no longer costs time, and saves memory (a fifth of a step's peak).
 inline constexpr Index default_direct_limit = 500000;
+/// The same in 3D (a displacement block size of 3), where a direct factorisation fills in far
+/// more: on the 3D block of bench/ BoomerAMG's step was as fast as UMFPACK's at 6.6·10^3
+/// unknowns (12^3 cells) and twice as fast at 1.5·10^4 (docs/performance.md, note 21).
+inline constexpr Index default_direct_limit_3d = 10000;
 
 /// What a solver may be told besides its name (numerics.linear_solver of the model file, or the
 /// command line's --linear-solver and --petsc-options).
@@ -91,8 +95,9 @@ struct LinearSolverOptions {
   /// PETSc options for experts, in PETSc's command-line syntax ("-ksp_type fgmres"); they override
   /// the PETSc solvers' own choices.
   std::string petsc_options;
-  /// `auto`: the direct solver below this many unknowns, AMG from it on.
-  Index direct_limit = default_direct_limit;
+  /// `auto`: the direct solver below this many unknowns, AMG from it on; negative: by the
+  /// problem's dimension (default_direct_limit, or default_direct_limit_3d in 3D).
+  Index direct_limit = -1;
 };
 
 /// A registered solver by name: "umfpack" (SuiteSparse sparse direct LU; the default),

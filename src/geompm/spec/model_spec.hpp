@@ -402,11 +402,11 @@ struct Numerics {
   int buffer_layers = 1;                // layers of empty cells kept active around the body
   LostPointPolicy lost_points = LostPointPolicy::Stop;
   std::string linear_solver = "umfpack";
-  std::string petsc_options;                // for experts: PETSc's own options (linear_solver.hpp)
-  Index direct_limit = 500000;              // auto: the direct solver below this many unknowns
-  bool mixed_volume_average = false;        // mixed_volume: cell_average (F-bar) or per_point
-  bool mixed_field_pressure = false;        // mixed_material_pressure: field (theory §14) or own
-  bool mixed_incremental_pressure = false;  // mixed_pressure_equation: incremental or total
+  std::string petsc_options;  // for experts: PETSc's own options (linear_solver.hpp)
+  Index direct_limit = -1;    // auto: the direct solver below this many unknowns (-1: by dimension)
+  bool mixed_volume_average = false;          // mixed_volume: cell_average (F-bar) or per_point
+  bool mixed_field_pressure = false;          // mixed_material_pressure: field (theory §14) or own
+  bool mixed_incremental_pressure = false;    // mixed_pressure_equation: incremental or total
   double pressure_stabilisation_floor = 0.0;  // share of the exact projection (theory eq. 11.10)
   bool fitted_pressure_start = false;         // mixed_pressure_start: fitted (eq. 11.11) or points
 };
