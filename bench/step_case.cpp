@@ -1,6 +1,7 @@
 #include "step_case.hpp"
 
 #include <Eigen/UmfPackSupport>
+#include <vector>
 
 #include "geompm/analysis/linear_solver_hints.hpp"
 #include "process_memory.hpp"
@@ -18,6 +19,33 @@ spec::Fixity rollers(const char* boundary) {
   return f;
 }
 
+/// The soil body filling the box from the origin to `top` (the cells above stay empty).
+spec::Body block_body(const Vec3& top, int points_per_cell) {
+  spec::Body body;
+  body.name = "block";
+  body.material = "soil";
+  body.region.kind = spec::Region::Kind::Box;
+  body.region.min = Vec3(0, 0, 0);
+  body.region.max = top;
+  body.points_per_cell = points_per_cell;
+  return body;
+}
+
+/// One load step of self-weight `g`, the base fixed and rollers on the `sides`.
+spec::Phase gravity_phase(const Vec3& g, const std::vector<const char*>& sides) {
+  spec::Phase phase;
+  phase.name = "gravity";
+  phase.duration = 1.0;
+  phase.time_step = {1.0, 1.0, 1.0};
+  phase.gravity = spec::Gravity{g, false};
+  for (const char* side_name : sides) phase.fixities.push_back(rollers(side_name));
+  spec::Fixity base;
+  base.boundary = "bottom";
+  base.components = {true, true, true};
+  phase.fixities.push_back(base);
+  return phase;
+}
+
 /// The 3D block: a cube of cells^3 Hex8 cells, the body filling all but the top layer, 8 points
 /// per cell, rollers on the four sides and a fixed base, gravity along -z.
 spec::Model block_under_gravity_3d(int cells) {
@@ -33,24 +61,8 @@ spec::Model block_under_gravity_3d(int cells) {
                              {{"E", 1e5}, {"nu", 0.3}, {"density", 2.0}},
                              spec::Formulation::Displacement,
                              {}});
-  spec::Body body;
-  body.name = "block";
-  body.material = "soil";
-  body.region.kind = spec::Region::Kind::Box;
-  body.region.min = Vec3(0, 0, 0);
-  body.region.max = Vec3(side, side, side - side / cells);  // the top layer stays empty
-  body.points_per_cell = 8;
-  model.bodies.push_back(body);
-  spec::Phase phase;
-  phase.name = "gravity";
-  phase.duration = 1.0;
-  phase.time_step = {1.0, 1.0, 1.0};
-  phase.gravity = spec::Gravity{Vec3(0, 0, -9.81), false};
-  spec::Fixity base;
-  base.boundary = "bottom";
-  base.components = {true, true, true};
-  phase.fixities = {rollers("left"), rollers("right"), rollers("front"), rollers("back"), base};
-  model.phases.push_back(phase);
+  model.bodies.push_back(block_body(Vec3(side, side, side - side / cells), 8));  // top layer empty
+  model.phases.push_back(gravity_phase(Vec3(0, 0, -9.81), {"left", "right", "front", "back"}));
   return model;
 }
 
@@ -103,29 +115,9 @@ spec::Model block_under_gravity(int cells, Formulation formulation, bool three_d
   model.numerics.mixed_incremental_pressure = model.numerics.fitted_pressure_start =
       formulation == Formulation::MixedIncrementalFitted;
 
-  spec::Body body;
-  body.name = "block";
-  body.material = "soil";
-  body.region.kind = spec::Region::Kind::Box;
-  body.region.min = Vec3(0, 0, 0);
-  body.region.max = Vec3(side, side - side / cells, 0);  // the top row stays empty
-  body.points_per_cell = triangles ? 3 : 4;
-  model.bodies.push_back(body);
-
-  spec::Phase phase;
-  phase.name = "gravity";
-  phase.duration = 1.0;
-  phase.time_step = {1.0, 1.0, 1.0};
-  phase.gravity = spec::Gravity{Vec3(0, -9.81, 0), false};
-  spec::Fixity rollers_left, rollers_right, base;
-  rollers_left.boundary = "left";
-  rollers_left.normal_only = true;
-  rollers_right.boundary = "right";
-  rollers_right.normal_only = true;
-  base.boundary = "bottom";
-  base.components = {true, true, true};
-  phase.fixities = {rollers_left, rollers_right, base};
-  model.phases.push_back(phase);
+  // The top row stays empty.
+  model.bodies.push_back(block_body(Vec3(side, side - side / cells, 0), triangles ? 3 : 4));
+  model.phases.push_back(gravity_phase(Vec3(0, -9.81, 0), {"left", "right"}));
   return model;
 }
 
