@@ -50,6 +50,8 @@ TEST(FrictionalFootingValidation, SelfWeightNgammaAtPhi20FallsAndFlattensWithThe
     t = testing::replace_once(
         t, "newton: {predictor: extrapolated, max_iterations: 20,",
         "newton: {predictor: extrapolated, max_iterations: 20, line_search: 6,");
+    // As measured: 1e-6 of the steel block's E in the empty cells, 2e-4 of the sand's.
+    t = testing::with_numerics(t, "empty_cell_stiffness", "2.0e-4");
     return testing::strip_mesh(t, n);
   };
   std::vector<double> q, rise;
