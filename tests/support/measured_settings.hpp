@@ -1,8 +1,8 @@
 // The numerics with which the strip footing studies of docs/validation.md §4-§5 were measured,
 // when the strip examples still carried them (until 2026-12-07; the rigid strips now run the
 // defaults: each point its own volume change, 1e-4 of the soil's E in the empty cells, the total
-// pressure equation). A test that asserts one of those measurements sets them, so that it checks the
-// option it was measured with; docs/validation.md gives the defaults' numbers beside them.
+// pressure equation). A test that asserts one of those measurements sets them, so that it checks
+// the option it was measured with; docs/validation.md gives the defaults' numbers beside them.
 #pragma once
 
 #include <string>
