@@ -79,8 +79,9 @@ Curve reference_curve(const std::string& example, double scale) {
 TEST(ContactFootings, SmoothAndRoughRigidStripsCarryPrandtlsLoad) {
   // Measured with the defaults: smooth 5.09, rough 5.17 at 0.1 B (-0.9 %, +0.6 %); over
   // 0.08-0.1 B 5.07, 5.22. The rough strip keeps to 10 Newton iterations a step; the smooth one
-  // does not (5 of its 41 steps take 11-15, where contact pieces are regrouped under the edge:
-  // docs/validation.md §17, not reached), so only its finishing is asserted.
+  // does not (5 of its 41 steps take 11-15, steps that start out of balance, likely as contact
+  // pieces are regrouped by background cell: docs/validation.md §17, not reached), so only its
+  // finishing is asserted.
   const Curve smooth = reference_curve("strip_footing_smooth", 2.0);
   const Curve rough = reference_curve("strip_footing_rough", 2.0);
   for (const Curve* c : {&smooth, &rough}) {

@@ -19,8 +19,9 @@ namespace geompm {
 GridSettings grid_settings(const Model& model) {
   GridSettings s;
   s.kinematics = model.kinematics();
-  s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * model.softest_modulus();
-  s.sparse_node_modulus = model.spec.numerics.sparse_node_stiffness * model.softest_modulus();
+  const double soil_modulus = model.softest_modulus();
+  s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * soil_modulus;
+  s.sparse_node_modulus = model.spec.numerics.sparse_node_stiffness * soil_modulus;
   s.sparse_node_fill = model.spec.numerics.sparse_node_fill;
   s.ghost_penalty = model.spec.numerics.ghost_penalty;
   s.ghost_penalty_fill = model.spec.numerics.ghost_penalty_fill;
