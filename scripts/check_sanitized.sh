@@ -38,8 +38,7 @@ for target in fuzz_model_reader fuzz_mesh_reader; do
     fuzz_model_reader) pattern="*.yaml" ;;
     fuzz_mesh_reader) pattern="*.msh" ;;
   esac
-  # Named by folder and file: two examples' files may share a name (structures/ and
-  # circular_footing/ both have circular_footing_smooth.yaml).
+  # Named by folder and file: two examples' files may share a name.
   for file in examples/*/$pattern; do
     cp "$file" "$corpus/$(basename "$(dirname "$file")")__$(basename "$file")"
   done

@@ -176,8 +176,11 @@ def plot(case, histories, binary, work):
     from a CSV of every run interpolated at every run's x (nan outside a run's range)."""
     spec = case["plot"]
     m = dict(case["metric"], **{k: spec[k] for k in ("x", "y", "x_scale", "y_scale") if k in spec})
-    x_of = {k: [m.get("x_scale", 1.0) * v for v in h.get(m["x"], [])] for k, h in histories.items()}
-    y_of = {k: [m.get("y_scale", 1.0) * v for v in h.get(m["y"], [])] for k, h in histories.items()}
+
+    def scale(label, key):  # a run's own scale (a force of the other sign) comes first
+        return case["runs"][label].get("metric", {}).get(key, m.get(key, 1.0))
+    x_of = {k: [scale(k, "x_scale") * v for v in h.get(m["x"], [])] for k, h in histories.items()}
+    y_of = {k: [scale(k, "y_scale") * v for v in h.get(m["y"], [])] for k, h in histories.items()}
     xs = sorted({x for values in x_of.values() for x in values})
     labels = [k for k in histories if x_of[k]]
     if not labels:

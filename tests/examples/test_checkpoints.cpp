@@ -244,13 +244,12 @@ TEST_F(Checkpoints, AKillInTheSecondPhaseResumesAtItsStart) {
   for (const auto& phase : phases) EXPECT_EQ(phase.at("status"), "finished");
 }
 
-// A rough rigid footing (penalty contact at the points, docs/theory.md §13) carries state from
-// step to step: its displacement reached and the stick anchors of the points touching its base.
-// Killed in its second checkpoint (step 4), it resumes from step 2 with both.
-TEST_F(Checkpoints, ARoughRigidFootingResumesWithItsStickAnchors) {
-  const std::string model =
-      replace_once(example_text("strip_footing/strip_footing_rigid_rough.yaml"), "duration: 1.0",
-                   "duration: 0.15");
+// A rough rigid structure in level-set contact (docs/theory.md §18) carries state from step to
+// step: its pose and the contact's multipliers, penetrations and states. Killed in its second
+// checkpoint (step 4), it resumes from step 2 with them.
+TEST_F(Checkpoints, ARoughRigidFootingResumesWithItsContactState) {
+  const std::string model = replace_once(example_text("structures/strip_footing_rough.yaml"),
+                                         "duration: 1.0", "duration: 0.15");
   run_reference(model);
   write("run.yaml", model);
   const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "2"});

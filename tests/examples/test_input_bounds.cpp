@@ -1,5 +1,5 @@
 // End-to-end: input that reads well but cannot run — expressions without a finite value,
-// magnitudes no physical quantity has, models and meshes too big for the machine, a rigid footing
+// magnitudes no physical quantity has, models and meshes too big for the machine, a structure
 // beside the mesh — is refused by `geompm check` (exit 2) with the file, the place and what was
 // expected; and files named in a model that are not what they should be are reported as what
 // they are (a directory, a device), not as "not found".
@@ -220,19 +220,29 @@ TEST_F(InputBounds, MeshCommandRefusesAMeshTooBig) {
   EXPECT_FALSE(fs::exists(work() / "m.msh"));
 }
 
-TEST_F(InputBounds, RigidFootingBesideTheMesh) {
+TEST_F(InputBounds, StructureBesideTheMesh) {
+  // Contact acts only inside the mesh: a structure in contact wholly beside it, or above it,
+  // touches nothing.
   Parts parts;
-  parts.phase_extra =
-      "    rigid_footings:\n"
-      "      - {name: f, base: 1, x: [5, 6], contact: smooth, displacement: [0, \"-0.1*t\"]}\n";
-  const std::string err = refused(model_text(parts));
-  EXPECT_TRUE(Contains(err,
-                       "phases[0].rigid_footings[0]: the rigid footing 'f' lies beside the "
-                       "mesh: its footprint spans [5, 6] in x but the mesh spans [0, 2]"));
-  parts.phase_extra =
-      "    rigid_footings:\n"
-      "      - {name: f, base: 7, x: [0, 1], contact: smooth, displacement: [0, \"-0.1*t\"]}\n";
-  EXPECT_TRUE(Contains(refused(model_text(parts)), "its base is at y = 7"));
+  const auto footing_at = [](const char* position) {
+    return std::string(
+               "structures:\n  - name: f\n    shape: {type: footing, width: 1, height: 0.2, "
+               "position: ") +
+           position + "}\n    density: 1\n";
+  };
+  parts.tail = footing_at("[5.5, 1]");
+  EXPECT_TRUE(Contains(refused(model_text(parts)),
+                       "structures[0]: the structure 'f' lies outside the mesh (which spans [0, "
+                       "2] x [0, 1]): contact acts only inside it"));
+  parts.tail = footing_at("[1, 7]");
+  EXPECT_TRUE(Contains(refused(model_text(parts)), "the structure 'f' lies outside the mesh"));
+  // On the block's top it is inside; beside it without contact it is a structure on its own.
+  for (const std::string& tail :
+       {footing_at("[1, 1]"), footing_at("[5.5, 1]") + "    contact: none\n"}) {
+    parts.tail = tail;
+    write("model.yaml", model_text(parts));
+    EXPECT_EQ(geompm({"check", "model.yaml"}).exit_code, 0) << tail;
+  }
 }
 
 // A mesh file that is a directory or a device is reported as such.

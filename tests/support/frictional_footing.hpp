@@ -114,8 +114,10 @@ inline Push run_push(const std::string& text, const std::string& name, double sc
 // Caquot's corresponding states for weightless soil: q_u = N_q q0 + c N_c).
 inline constexpr double kSurchargeScale = -2.0;
 inline const double kCohesionShare = 0.01 * kNc;
-// N_gamma = q / (gamma B / 2) = 2 x 2 x force / (20 x 1).
+// N_gamma = q / (gamma B / 2) = 2 x 2 x force / (20 x 1): the steel block's reaction (on the
+// soil, downward), or the contact force on a rigid structure (upward).
 inline constexpr double kGammaScale = -0.2;
+inline constexpr double kContactGammaScale = 0.2;
 // The rounded N_gamma examples' token cohesion c = 0.1 kPa adds, by superposition,
 // 2 c N_c / (gamma B) = 0.30 to N_gamma (frictional_footing_ngamma_limit*.yaml).
 inline const double kGammaCohesionShare = 2.0 * 0.1 * kNc / 20.0;

@@ -45,13 +45,9 @@ class GridHarness {
   void set_point_targets(std::vector<double> stiffness, std::vector<Vec3> target,
                          std::vector<unsigned char> mask) {
     auto& springs = system_->add(std::make_unique<PointSprings>(
-        grid_, *points_, system_->dofs(),
+        grid_, *points_,
         PointTargets{std::move(stiffness), std::move(target), std::move(mask), {}}));
     integrator_->add_point_term(&springs);
-  }
-  void set_point_force_law(std::vector<char> acts, std::vector<Vec3> offset, PointForceLaw law) {
-    system_->add(std::make_unique<PointForces>("force law", grid_, *points_, system_->dofs(),
-                                               std::move(acts), std::move(offset), std::move(law)));
   }
   /// Per unknown: 1 if constrained (its prescribed value 0).
   void set_constraints(const std::vector<char>& constrained) {

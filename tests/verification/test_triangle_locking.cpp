@@ -139,24 +139,29 @@ TEST(TriangleLocking, NgammaOnCrossedTrianglesLosesTheDilatancyLocking) {
   EXPECT_LT(std::abs(crossed.at(0.002) / crossed.at(0.0015) - 1.0), 0.01);
 }
 
-/// The N_gamma model with a rigid footing of the steel block's footprint (penalty contact at the
-/// points' domain tops, docs/theory.md §13, `contact` smooth or rough) instead of the block. The
-/// steel is left listed: no point carries it, so it does not scale the empty cells' stiffness
-/// (docs/theory.md eq. 6.1).
+/// The N_gamma model with a rigid structure of the steel block's footprint in level-set contact
+/// (docs/theory.md §17-§18, `contact` smooth or rough) instead of the block: held in the
+/// geostatic phase, then driven down as the block was. The steel is left listed: no point carries
+/// it, so it does not scale the empty cells' stiffness (docs/theory.md eq. 6.1).
 std::string rigid_footing_instead(std::string t, const std::string& contact) {
   t = testing::replace_once(t,
                             "  footing: {material: steel, region: {box: {min: [0, 5], max: [0.5, "
                             "5.1]}}, points_per_cell: 4}\n",
                             "");
-  t = testing::replace_once(t, "point_sets:\n  footing: {body: footing, region: all}\n", "");
+  t = testing::replace_once(
+      t, "point_sets:\n  footing: {body: footing, region: all}\n",
+      "structures:\n  - name: footing\n    shape: {type: footing, width: 1, height: 0.2, "
+      "position: [0, 5]}\n    density: 1\n" +
+          (contact == "rough" ? std::string("    contact: {tangential: rough}\n") : ""));
+  t = testing::replace_once(t, "    fixities: &supports\n",
+                            "    structures:\n      footing: {displacement: [0, 0], rotation: 0}\n"
+                            "    fixities: &supports\n");
   t = testing::replace_once(t, "    prescribed_motion:\n      - {point_set: footing, displacement:",
-                            "    rigid_footings:\n      - {name: footing, base: 5, x: [0, 0.5], "
-                            "contact: " +
-                                contact + ", displacement:");
+                            "    structures:\n      footing: {rotation: 0, displacement:");
   t = testing::replace_once(t, "{quantity: displacement, point_set: footing,",
-                            "{quantity: displacement, footing: footing,");
+                            "{quantity: displacement, structure: footing,");
   return testing::replace_once(t, "{quantity: reaction, point_set: footing,",
-                               "{quantity: reaction, footing: footing,");
+                               "{quantity: contact_force, structure: footing,");
 }
 
 TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRatio) {
@@ -175,8 +180,8 @@ TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRa
                                          "empty_cell_stiffness", "1.0e-4"),
                   5, Mesh::Crossed);
   };
-  const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", -0.2, 1.0);
-  const auto smooth = run_push(text("smooth"), "tri_ngamma_rigid_smooth", -0.2, 1.0);
+  const auto rough = run_push(text("rough"), "tri_ngamma_rigid_rough", 0.2, 1.0);
+  const auto smooth = run_push(text("smooth"), "tri_ngamma_rigid_smooth", 0.2, 1.0);
   const double qr = rough.mean(0.0015, 0.002), qs = smooth.mean(0.0015, 0.002);
   std::printf(
       "[N_gamma, rigid footings on crossed triangles, h = B/10] rough %.2f, smooth %.2f, "
@@ -249,11 +254,11 @@ TEST(TriangleLocking, RigidFootingNgammaCarriesNothingOnTheEmptyCells) {
     return meshed(rigid_footing_instead(t, "rough"), 5, Mesh::Crossed);
   };
   const double soil =
-      run_push(text("1.0e-6"), "tri_ngamma_empty_e6", -0.2, 1.0).mean(0.00015, 0.0002);
+      run_push(text("1.0e-6"), "tri_ngamma_empty_e6", 0.2, 1.0).mean(0.00015, 0.0002);
   const double tenth =
-      run_push(text("1.0e-7"), "tri_ngamma_empty_e7", -0.2, 1.0).mean(0.00015, 0.0002);
+      run_push(text("1.0e-7"), "tri_ngamma_empty_e7", 0.2, 1.0).mean(0.00015, 0.0002);
   const double steel =
-      run_push(text("2.0e-4"), "tri_ngamma_empty_steel", -0.2, 1.0).mean(0.00015, 0.0002);
+      run_push(text("2.0e-4"), "tri_ngamma_empty_steel", 0.2, 1.0).mean(0.00015, 0.0002);
   std::printf(
       "[N_gamma, rough rigid footing, h = B/10] empty cells 1e-6 E: %.3f, 1e-7 E: %.3f, "
       "2e-4 E: %.3f\n",

@@ -78,8 +78,8 @@ void seed_cell(const spec::Model& spec, std::size_t b, Index c, Model& model) {
       model.mesh, c, axisymmetric, [&](int, const Vec3& xi, const Vec3& x, double volume) {
         const Index m = body_material_at(spec, spec.bodies[b], x(dim - 1));
         const Material& material = *model.materials[m];
-        const Index g = gauss.add(static_cast<Index>(b), m, x, volume, material.density(), c, xi,
-                                  Vec3::Zero(), Vec3::Zero());
+        const Index g =
+            gauss.add(static_cast<Index>(b), m, x, volume, material.density(), c, xi, Vec3::Zero());
         material.initialise_point(x, dim, gauss.internal[g]);
       });
 }

@@ -111,7 +111,7 @@ std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
     const auto& h = histories_[k];
     if (!h.structure.empty())
       v.push_back(structure_value(model, h, nullptr));
-    else if (h.quantity == "displacement" && (!h.boundary.empty() || !h.footing.empty()))
+    else if (h.quantity == "displacement" && !h.boundary.empty())
       v.push_back(0.0);
     else if (h.quantity == "displacement")
       v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.displacement));
@@ -147,21 +147,12 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
         const Index d = dofs.dof(u, active_node, h.component);
         if (dofs.constrained(d)) value += step.reaction(d);
       };
-      if (!h.footing.empty()) {
-        // The force the footing exerts on the soil (docs/theory.md eq. 13.10).
-        if (auto it = step.footing_reactions.find(h.footing); it != step.footing_reactions.end())
-          value = it->second(h.component);
-      } else if (!h.boundary.empty()) {
+      if (!h.boundary.empty()) {
         for (Index node : model.mesh.node_groups.at(h.boundary))
           if (grid.node_to_active()[node] >= 0) add(grid.node_to_active()[node]);
       } else if (auto it = step.set_reactions.find(set_bits_[k]); it != step.set_reactions.end()) {
         value = it->second(h.component);
       }
-    } else if (h.quantity == "displacement" && !h.footing.empty()) {
-      // The displacement the footing has been given so far.
-      if (auto it = model.footing_displacement.find(h.footing);
-          it != model.footing_displacement.end())
-        value = it->second(h.component);
     } else if (h.quantity == "displacement" && !h.boundary.empty()) {
       // What the grid motions of the boundary have prescribed so far (docs/theory.md §5.3).
       if (auto it = model.grid_displacement.find(h.boundary); it != model.grid_displacement.end())

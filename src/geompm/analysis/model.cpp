@@ -27,7 +27,6 @@ namespace geompm {
 
 void Model::save_state(ByteWriter& out) const {
   out.put(grid_displacement);
-  out.put(footing_displacement);
   out.put(lost_mass);
   out.put(lost_points);
   // The FEM region's Gauss points and the moved mesh (docs/theory.md §19), only with one, so that
@@ -40,7 +39,6 @@ void Model::save_state(ByteWriter& out) const {
 
 void Model::load_state(ByteReader& in) {
   in.get(grid_displacement);
-  in.get(footing_displacement);
   in.get(lost_mass);
   in.get(lost_points);
   if (fem) {
@@ -254,9 +252,8 @@ void add_body_point(const spec::Model& spec, std::size_t b, const SeedPoint& s, 
   const spec::Body& body = spec.bodies[b];
   const int dim = model.mesh.dim();
   const Index material = body_material_at(spec, body, s.position(dim - 1));
-  const Index p =
-      model.points.add(static_cast<Index>(b), material, s.position, s.volume,
-                       model.materials[material]->density(), c, s.xi, s.half_size, s.top_offset);
+  const Index p = model.points.add(static_cast<Index>(b), material, s.position, s.volume,
+                                   model.materials[material]->density(), c, s.xi, s.half_size);
   // Point-dependent state, e.g. a strength growing with depth.
   try {
     model.materials[material]->initialise_point(s.position, dim, model.points.internal[p]);
@@ -379,36 +376,27 @@ void check_boundaries(const spec::Model& spec, const Mesh& mesh) {
     check_boundary(mesh, history.boundary, history.source);
 }
 
-// A rigid footing acts only on points, and points live inside the mesh: a footprint beside the
-// mesh, or a base beyond its vertical extent, would run the phase with no force at all.
-void check_footings_in_mesh(const spec::Model& spec, const Mesh& mesh) {
-  const MeshBounds box = mesh_bounds(mesh);
-  const int dim = mesh.dim(), vertical = dim - 1;
-  for (const auto& phase : spec.phases)
-    for (const auto& footing : phase.footings) {
-      const std::array<double, 2>* ranges[2] = {&footing.x, &footing.y};
-      for (int d = 0; d < vertical; ++d)
-        if ((*ranges[d])[1] < box.lo(d) - box.tol || (*ranges[d])[0] > box.hi(d) + box.tol)
-          throw InputError(
-              footing.source,
-              fmt::format("the rigid footing '{}' lies beside the mesh: its footprint spans "
-                          "[{:g}, {:g}] in {} but the mesh spans [{:g}, {:g}]; it would touch "
-                          "no point",
-                          footing.name, (*ranges[d])[0], (*ranges[d])[1], "xyz"[d], box.lo(d),
-                          box.hi(d)));
-      if (footing.base < box.lo(vertical) - box.tol || footing.base > box.hi(vertical) + box.tol)
-        throw InputError(footing.source,
-                         fmt::format("the rigid footing '{}' lies outside the mesh: its base is "
-                                     "at {} = {:g} but the mesh spans [{:g}, {:g}]; it would "
-                                     "touch no point",
-                                     footing.name, "xyz"[vertical], footing.base, box.lo(vertical),
-                                     box.hi(vertical)));
-    }
-}
-
 }  // namespace
 
 namespace {
+// Contact acts only inside the background mesh, where the soil's points and level set are: a
+// structure in contact whose whole surface lies outside it would run with no force at all.
+void check_structure_reaches_mesh(const Model& model, std::size_t s, const spec::Structure& spec) {
+  if (!spec.contact.enabled) return;  // `contact: none`: a structure on its own
+  const StructureMesh& mesh = model.structures[s]->mesh();
+  for (const Facet& facet : mesh.surface())
+    if (model.locator->locate(facet.centre(mesh.nodes()))) return;
+  const MeshBounds box = mesh_bounds(model.mesh);
+  throw InputError(
+      spec.source,
+      fmt::format("the structure '{}' lies outside the mesh (which spans [{:g}, {:g}] x [{:g}, "
+                  "{:g}]{}): contact acts only inside it, so it would touch no soil; place it in "
+                  "the mesh, or extend the mesh over it",
+                  spec.name, box.lo(0), box.hi(0), box.lo(1), box.hi(1),
+                  model.mesh.dim() == 3 ? fmt::format(" x [{:g}, {:g}]", box.lo(2), box.hi(2))
+                                        : std::string()));
+}
+
 // Adhesion as a fraction alpha of s_u needs soil that has one: every material the touched bodies'
 // points carry must keep an undrained strength per point (Tresca's internal variable "su").
 void check_adhesion_strength(const Model& model, const ContactPair& pair,
@@ -478,9 +466,10 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
-  check_footings_in_mesh(spec, mesh);
-  for (std::size_t s = 0; s < spec.structures.size(); ++s)
+  for (std::size_t s = 0; s < spec.structures.size(); ++s) {
+    check_structure_reaches_mesh(*model, s, spec.structures[s]);
     check_adhesion_strength(*model, model->contacts[s], spec.structures[s].contact);
+  }
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
   // (docs/theory.md §10), before any step.
   apply_initial_stresses(*model);

@@ -42,8 +42,6 @@ struct Model {
   /// Displacement prescribed so far on the nodes of each driven boundary or node set (grid
   /// motions, summed over the phases; components never driven stay 0), for histories.
   std::map<std::string, Vec3> grid_displacement;
-  /// Displacement of each rigid footing so far (summed over the phases that move it).
-  std::map<std::string, Vec3> footing_displacement;
   double lost_mass = 0.0;  // of points removed after leaving the mesh
   Index lost_points = 0;
   /// Per body: the seeding positions left out because they lie inside a structure (a structure

@@ -21,7 +21,6 @@ PhaseContext::PhaseContext(const Model& model, const spec::Phase& phase) : spec(
         motion.components[d] = Expression(m.components[d], component_place(m.source, d));
     motions.push_back(std::move(motion));
   }
-  for (const auto& f : phase.footings) footings.emplace_back(f, model.mesh.dim());
   for (const auto& l : phase.loads) {
     Load load;
     load.set = model.point_set_bit(l.point_set);
@@ -62,8 +61,6 @@ Vec3 PhaseContext::load(const Load& l, double t) const {
 void PhaseContext::save(ByteWriter& out) const {
   out.put(static_cast<std::uint64_t>(motions.size()));
   for (const Motion& m : motions) out.put(m.done);
-  out.put(static_cast<std::uint64_t>(footings.size()));
-  for (const RigidFooting& f : footings) f.save(out);
 }
 
 void PhaseContext::load(ByteReader& in) {
@@ -75,8 +72,6 @@ void PhaseContext::load(ByteReader& in) {
   };
   expect(motions.size(), "prescribed motions");
   for (Motion& m : motions) in.get(m.done);
-  expect(footings.size(), "rigid footings");
-  for (RigidFooting& f : footings) f.load(in);
   in.expect_end();
 }
 

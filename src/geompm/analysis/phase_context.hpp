@@ -9,7 +9,6 @@
 #include "geompm/analysis/model.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
-#include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/core/expression.hpp"
 #include "geompm/structures/structure_drive.hpp"
 
@@ -30,8 +29,7 @@ struct PhaseContext {
   const spec::Phase* spec = nullptr;
   std::vector<ResolvedFixity> fixities;
   std::vector<ResolvedGridMotion> grid_motions;  // prescribed motion of grid nodes
-  std::vector<Motion> motions;         // `done` is advanced by the step solver on convergence
-  std::vector<RigidFooting> footings;  // committed by the step solver on convergence
+  std::vector<Motion> motions;  // `done` is advanced by the step solver on convergence
   std::vector<Load> loads;
   /// Per structure of the model (in its order), how the phase drives it (free if not listed).
   std::vector<StructureDrive> structure_drives;
@@ -45,7 +43,7 @@ struct PhaseContext {
   /// Force of load l at phase time t.
   Vec3 load(const Load& l, double t) const;
 
-  /// What persists from step to step (the motions' `done`, the footings' state), for a
+  /// What persists from step to step (the motions' `done`), for a
   /// checkpoint; load() expects the phase the checkpoint was written in.
   void save(ByteWriter& out) const;
   void load(ByteReader& in);

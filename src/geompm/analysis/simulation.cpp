@@ -267,8 +267,8 @@ void Simulation::check_motions_followed() {
   stop(fmt::format(
       "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "
       "resists more than the penalty springs that drive its points can impose (docs/theory.md "
-      "§5): prescribe a motion the body can follow, or drive it through a rigid footing, a "
-      "grid_motion or a structure. Results up to time {:g} are in {}",
+      "§5): prescribe a motion the body can follow, or drive it through a structure (a rigid "
+      "footing in contact) or a grid_motion. Results up to time {:g} are in {}",
       phase_->spec->name, unfollowed, time_, options_.output_dir.string()));
 }
 

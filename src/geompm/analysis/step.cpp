@@ -8,7 +8,6 @@
 
 #include "geompm/analysis/linear_solver_hints.hpp"
 #include "geompm/analysis/step_contributions.hpp"
-#include "geompm/boundary/footing_contact.hpp"
 #include "geompm/physics/inertia.hpp"
 #include "geompm/physics/newmark.hpp"
 #include "geompm/physics/point_integrator.hpp"
@@ -462,7 +461,6 @@ void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& 
   Reactions reactions;
   system_->report(step.du, reactions);
   result.set_reactions = std::move(reactions.point_sets);
-  result.footing_reactions = std::move(reactions.structures);
   for (std::size_t k = 0; k < model_.structures.size(); ++k)
     if (const auto* rigid = dynamic_cast<const RigidStructure*>(model_.structures[k].get()))
       result.structure_forces[rigid->name()] =
@@ -486,13 +484,6 @@ void StepSolver::commit_motions(PhaseContext& phase, const Step& step) {
     for (int i = 0; i < 3; ++i)
       if (!std::isnan(reached(i))) phase.motions[m].done(i) = reached(i);
   }
-  if (const FootingContact* contact = system_->find<FootingContact>())
-    for (std::size_t k = 0; k < phase.footings.size(); ++k) {
-      const RigidFooting& footing = phase.footings[k];
-      Vec3& done =
-          model_.footing_displacement.try_emplace(footing.name(), Vec3::Zero()).first->second;
-      done += contact->displacement(k) - footing.done();
-    }
   system_->commit();
   for (std::size_t m = 0; m < phase.grid_motions.size(); ++m) {
     Vec3& done = model_.grid_displacement.try_emplace(phase.grid_motions[m].name, Vec3::Zero())

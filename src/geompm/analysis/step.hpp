@@ -47,7 +47,6 @@ struct StepResult {
   /// Nodal pressures per active node of the mixed p-u formulation (empty without it).
   Vector nodal_pressure;
   std::map<int, Vec3> set_reactions;  // point-set bit -> force its prescribed motion exerts
-  std::map<std::string, Vec3> footing_reactions;  // rigid footing -> force it exerts on the soil
   /// Structure -> what its drive exerts on it (docs/theory.md §17.4).
   std::map<std::string, DriveForces> structure_forces;
   Vec3 gravity = Vec3::Zero();

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "geompm/boundary/footing_contact.hpp"
 #include "geompm/contact/level_set_contact.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
@@ -80,30 +79,8 @@ void point_motions(StepSystem& system, StepContext& c) {
         }
     }
   }
-  auto& springs =
-      system.add(std::make_unique<PointSprings>(c.grid, points, system.dofs(), std::move(targets)));
+  auto& springs = system.add(std::make_unique<PointSprings>(c.grid, points, std::move(targets)));
   system.find<PointIntegrator>()->add_point_term(&springs);
-}
-
-void rigid_footings(StepSystem& system, StepContext& c) {
-  // Rigid footings: penalty contact at the points (docs/theory.md §13).
-  if (c.phase.footings.empty()) return;
-  FootingContactInputs inputs;
-  inputs.footings = &c.phase.footings;
-  for (const RigidFooting& footing : c.phase.footings) {
-    std::vector<char> in_body(c.model.spec.bodies.size(), footing.spec().bodies.empty());
-    for (const std::string& body : footing.spec().bodies)
-      for (std::size_t b = 0; b < in_body.size(); ++b)
-        if (c.model.spec.bodies[b].name == body) in_body[b] = 1;
-    inputs.acts_on_body.push_back(std::move(in_body));
-  }
-  for (Index p = 0; p < c.model.points.size(); ++p)
-    inputs.modulus.push_back(c.model.materials[c.model.points.material[p]]->reference_modulus());
-  inputs.t0 = c.t0;
-  inputs.t1 = c.t1;
-  auto& contact = system.add(
-      std::make_unique<FootingContact>(c.grid, c.model.points, system.dofs(), std::move(inputs)));
-  system.find<PointIntegrator>()->add_point_term(&contact);
 }
 
 void body_loads(StepSystem& system, StepContext& c) {
@@ -178,8 +155,9 @@ using Maker = void (*)(StepSystem&, StepContext&);
 // Contact comes first: it adds its multipliers to the unknowns, which the others size their
 // vectors by.
 constexpr Maker makers[] = {
-    contacts,      material_points, fem_region, empty_cells,   sparse_node_springs, ghost_penalty,
-    point_motions, rigid_footings,  body_loads, surface_loads, structures,          inertia};
+    contacts,      material_points, fem_region, empty_cells,   sparse_node_springs,
+    ghost_penalty, point_motions,   body_loads, surface_loads, structures,
+    inertia};
 
 }  // namespace
 

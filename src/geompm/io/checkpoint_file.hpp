@@ -16,7 +16,7 @@
 namespace geompm {
 
 inline constexpr char checkpoint_magic[8] = {'G', 'E', 'O', 'M', 'P', 'M', 'C', 'K'};
-inline constexpr std::uint32_t checkpoint_format_version = 4;
+inline constexpr std::uint32_t checkpoint_format_version = 5;
 /// Magic, format version, body length and checksum come before the body.
 inline constexpr std::size_t checkpoint_header_bytes = 8 + 4 + 8 + 8;
 

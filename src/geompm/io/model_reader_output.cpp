@@ -51,8 +51,7 @@ spec::History named_history(const yaml::Node& node, const yaml::Map& section, sp
     history.name = name->text();
   } else {
     history.name = history.quantity;
-    for (const std::string* target :
-         {&history.boundary, &history.point_set, &history.footing, &history.structure})
+    for (const std::string* target : {&history.boundary, &history.point_set, &history.structure})
       if (!target->empty()) history.name += "_" + *target;
     if (history.component >= 0)
       history.name += std::string("_") + component_name(history.component);
@@ -80,29 +79,28 @@ spec::History read_history(const yaml::Node& node, const Context& context,
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);
 
   if (contains(vector_quantities, quantity)) {
-    // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes;
-    // so has a rigid footing.
+    // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes.
+    if (auto footing = section.find("footing"))
+      footing->fail(
+          "rigid footings are structures now: measure the footing with structure: <name> "
+          "(quantity displacement, or contact_force for the force the soil exerts on it)");
     const bool on_boundary = quantity == "reaction" || quantity == "displacement";
     const std::string target =
-        on_boundary ? section.exactly_one_of({"boundary", "point_set", "footing"}) : "point_set";
+        on_boundary ? section.exactly_one_of({"boundary", "point_set"}) : "point_set";
     if (!on_boundary)
-      for (const char* key : {"boundary", "footing"})
-        if (auto other = section.find(key))
-          other->fail(
-              fmt::format("{} is measured on a point set: give point_set (a {} "
-                          "is only for reaction and displacement)",
-                          quantity, key));
+      if (auto other = section.find("boundary"))
+        other->fail(
+            fmt::format("{} is measured on a point set: give point_set (a boundary "
+                        "is only for reaction and displacement)",
+                        quantity));
     if (target == "boundary")
       history.boundary = read_boundary_name(section.required("boundary"), context);
-    else if (target == "footing")
-      history.footing =
-          read_reference(section.required("footing"), "rigid footing", context.footings);
     else
       history.point_set =
           read_reference(section.required("point_set"), "point set", context.point_sets);
     history.component = read_component(section.required("component"), context.dimension);
   } else {
-    for (const char* key : {"boundary", "point_set", "footing", "component"})
+    for (const char* key : {"boundary", "point_set", "component"})
       if (auto value = section.find(key))
         value->fail(
             fmt::format("{} is one number for the whole model: it takes no {}", quantity, key));

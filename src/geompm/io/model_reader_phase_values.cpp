@@ -1,4 +1,4 @@
-// The expressions of time a phase drives with (prescribed motions of points, nodes, footings and
+// The expressions of time a phase drives with (prescribed motions of points, nodes and
 // structures, point-set loads) evaluated where `geompm check` can: at the phase's start and end.
 // A non-finite value there ("log(t)" at t = 0, "1/(1-t)" at t = 1) is bad input, refused before
 // any run; at the times between, the run itself stops with the same message (Expression).
@@ -36,7 +36,6 @@ void check_phase_expressions(const spec::Phase& phase) {
   const double duration = phase.duration;
   check_components(phase.motions, duration);
   check_components(phase.grid_motions, duration);
-  check_components(phase.footings, duration);
   check_components(phase.loads, duration);
   for (const spec::StructureDrive& drive : phase.structure_drives)
     for (int c = 0; c < 6; ++c) {

@@ -373,84 +373,6 @@ spec::GridMotion read_grid_motion(const yaml::Node& node, const Context& context
   return motion;
 }
 
-// A range [low, high] along a horizontal axis: two numbers, low < high.
-std::array<double, 2> read_range(const yaml::Node& node, const char* axis) {
-  const std::string expected =
-      fmt::format("expected the footprint along {} as [low, high], e.g. [0, 0.5]", axis);
-  if (!node.is_list()) node.fail(fmt::format("{}; found {}", expected, node.describe()));
-  const std::vector<yaml::Node> items = node.items();
-  if (items.size() != 2)
-    node.fail(fmt::format("{}; found a list of {} values", expected, items.size()));
-  const std::array<double, 2> range = {items[0].number(), items[1].number()};
-  if (!(range[0] < range[1]))
-    node.fail(
-        fmt::format("{}: low ({}) must be less than high ({})", expected, range[0], range[1]));
-  return range;
-}
-
-// A rigid footing (docs/theory.md §13): geometry at the phase start, contact, motion, penalty.
-spec::RigidFooting read_rigid_footing(const yaml::Node& node, const Context& context) {
-  const bool three_d = context.dimension == 3;
-  const yaml::Map section = node.map({"name", "base", "x", "y", "contact", "displacement",
-                                      "velocity", "bodies", "penalty", "penalty_factor"});
-  spec::RigidFooting footing;
-  footing.source = node.where();
-  const yaml::Node name = section.required("name");
-  footing.name = name.text();
-  if (footing.name.empty()) name.fail("a rigid footing needs a name");
-  footing.base = section.required("base").number();
-  const yaml::Node x = section.required("x");
-  footing.x =
-      read_range(x, context.kinematics == Kinematics::Axisymmetric ? "x (the radius)" : "x");
-  if (context.kinematics == Kinematics::Axisymmetric && footing.x[0] < 0)
-    x.fail(
-        fmt::format("in an axisymmetric model x is the radius: the footprint must lie at x >= 0, "
-                    "found [{}, {}] (a disc of radius R is [0, R])",
-                    footing.x[0], footing.x[1]));
-  if (three_d) {
-    footing.y = read_range(section.required("y"), "y");
-  } else if (auto y = section.find("y")) {
-    y->fail("in a 2D model the footprint is a range along x only (y is the vertical): remove 'y'");
-  }
-  footing.rough = section.required("contact").choice({"smooth", "rough"}) == "rough";
-  // The footing's motion: every component prescribed (a rigid body under displacement control).
-  const std::string kind = section.exactly_one_of({"displacement", "velocity"});
-  footing.velocity = kind == "velocity";
-  const yaml::Node components = section.required(kind);
-  footing.components = read_expression_vector(components, context.dimension, time_only, false, "");
-  if (context.kinematics == Kinematics::Axisymmetric) {
-    const yaml::Node radial = components.items()[0];
-    const std::string& text = footing.components[0];
-    std::size_t used = 0;
-    double value = 1.0;
-    try {
-      value = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (!(used > 0 && used == text.size() && value == 0.0))
-      radial.fail(
-          "in an axisymmetric model the footing is a disc on the axis: it can only move along "
-          "the axis, so its x (radial) component must be 0");
-  }
-  if (auto bodies = section.find_non_empty("bodies"))
-    for (const yaml::Node& item : bodies->items()) {
-      const std::string body = read_reference(item, "body", context.bodies);
-      if (std::find(footing.bodies.begin(), footing.bodies.end(), body) != footing.bodies.end())
-        item.fail(fmt::format("the body '{}' is listed twice", body));
-      footing.bodies.push_back(body);
-    }
-  const auto penalty = section.find("penalty");
-  const auto factor = section.find("penalty_factor");
-  if (penalty && factor)
-    factor->fail(
-        "give either penalty (kappa, a stress per unit length) or penalty_factor (kappa = "
-        "factor x E / h), not both");
-  if (penalty) footing.penalty = read_positive(*penalty);
-  if (factor) footing.penalty_factor = read_positive(*factor);
-  return footing;
-}
-
 spec::PointSetLoad read_load(const yaml::Node& node, const Context& context) {
   const yaml::Map section = node.map({"point_set", "force"});
   spec::PointSetLoad load;
@@ -523,17 +445,12 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
                           motion.boundary, other.source.key_path, other.source.line));
       phase.grid_motions.push_back(std::move(motion));
     }
-  if (auto footings = section.find_non_empty("rigid_footings"))
-    for (const yaml::Node& item : footings->items()) {
-      spec::RigidFooting footing = read_rigid_footing(item, context);
-      for (const spec::RigidFooting& other : phase.footings)
-        if (other.name == footing.name)
-          item.fail(
-              fmt::format("the rigid footing '{}' is already defined in this phase ({}, "
-                          "line {}); footings of a phase need different names",
-                          footing.name, other.source.key_path, other.source.line));
-      phase.footings.push_back(std::move(footing));
-    }
+  if (auto footings = section.find("rigid_footings"))
+    footings->fail(
+        "rigid footings are structures in contact with the soil: give the footing under "
+        "`structures:` (shape: {type: footing, width, height, position}; contact: {tangential: "
+        "rough} for a rough base) and drive it in the phase's `structures:`, e.g. footing: "
+        "{displacement: [0, \"-0.1*t\"], rotation: 0} (docs/user-guide.md, structures)");
   if (auto loads = section.find_non_empty("loads"))
     for (const yaml::Node& item : loads->items()) {
       spec::PointSetLoad load = read_load(item, context);
@@ -556,12 +473,6 @@ std::vector<spec::Phase> read_phases(const yaml::Node& node, Context& context) {
     node.fail("expected at least one phase, e.g. - {name: gravity, time_step: 0.1}");
   std::vector<spec::Phase> phases;
   for (const yaml::Node& item : items) phases.push_back(read_phase(item, context, phases));
-  // Histories refer to the rigid footings by name (one name may recur across phases).
-  for (const spec::Phase& phase : phases)
-    for (const spec::RigidFooting& footing : phase.footings)
-      if (std::find(context.footings.begin(), context.footings.end(), footing.name) ==
-          context.footings.end())
-        context.footings.push_back(footing.name);
   return phases;
 }
 

@@ -33,8 +33,6 @@ struct Context {
   std::vector<std::string> point_sets;
   /// Named node sets: boundaries too (read_boundary_name accepts them).
   std::vector<std::string> node_sets;
-  /// Rigid footings of the phases (a name may recur: the same footing in several phases).
-  std::vector<std::string> footings;
   /// Structures (the top-level list), and those of them that are deformable.
   std::vector<std::string> structures;
   std::vector<std::string> deformable_structures;

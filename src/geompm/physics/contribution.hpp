@@ -36,9 +36,8 @@ struct SystemForces {
 
 /// Forces the contributions report at the converged increment, for histories.
 struct Reactions {
-  std::map<int, Vec3> point_sets;          // point-set bit -> force its prescribed motion exerts
-  std::map<std::string, Vec3> structures;  // rigid footing -> force it exerts on the soil
-  std::map<std::string, Vec3> contacts;    // structure -> force the soil exerts on it by contact
+  std::map<int, Vec3> point_sets;        // point-set bit -> force its prescribed motion exerts
+  std::map<std::string, Vec3> contacts;  // structure -> force the soil exerts on it by contact
 };
 
 class Contribution {

@@ -34,30 +34,6 @@ Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector
   return value;
 }
 
-void GridSystem::place_weights(const MaterialPoints& points, Index p, const Vec3& offset,
-                               PlaceWeights& out) const {
-  out.nodes.clear();
-  out.W.clear();
-  const auto add = [&](Index node, double N, const double* gradient) {
-    double w = N;
-    for (int d = 0; d < dim_; ++d) w += gradient[d] * offset(d);
-    out.nodes.push_back(node);
-    out.W.push_back(w);
-  };
-  if (wide_stencil()) {
-    for (Index a = wide_.start[p]; a < wide_.start[p + 1]; ++a)
-      add(wide_.nodes[a], wide_.N[a], wide_.gradients.data() + std::size_t(a) * dim_);
-    return;
-  }
-  const auto nodes = mesh_.cell_nodes(points.cell[p]);
-  const double* G = gradients_.data() + std::size_t(p) * nen_ * dim_;
-  for (int a = 0; a < nen_; ++a) {
-    double gradient[3] = {0, 0, 0};
-    for (int d = 0; d < dim_; ++d) gradient[d] = G[d * nen_ + a];
-    add(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a], gradient);
-  }
-}
-
 std::span<const Index> GridSystem::averaged_stencil_union(Index ci) const {
   if (union_start_.empty()) return {};
   return {union_nodes_.data() + union_start_[ci],

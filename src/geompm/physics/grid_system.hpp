@@ -65,13 +65,6 @@ struct GridSettings {
   std::vector<char> fem_cells;
 };
 
-/// The nodes a place of a point's domain moves with and their weights: W_a = N_a + grad N_a .
-/// offset for the place x_p + offset carried by the step's deformation (docs/theory.md eq. 13.6).
-struct PlaceWeights {
-  std::vector<Index> nodes;  // active nodes
-  std::vector<double> W;
-};
-
 class GridSystem {
  public:
   /// Throws std::invalid_argument if GIMP is asked for on a mesh that is not a rectilinear grid.
@@ -155,9 +148,6 @@ class GridSystem {
   /// sum_a N_a(x_p) u_a of a nodal vector, with the point's weights of this step. Valid after
   /// initialise(), before the points are relocated.
   Vec3 interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const;
-  /// The weights of the place x_p + offset of point p's domain (docs/theory.md eq. 13.6).
-  void place_weights(const MaterialPoints& points, Index p, const Vec3& offset,
-                     PlaceWeights& out) const;
 
  private:
   template <class E>

@@ -2,8 +2,8 @@
 // local vector and matrix per cell and one scatter (like the domain integrators of a finite
 // element form): their sums then come out in the same order whatever else the step holds, and
 // they run on all threads with the cells. A CellTerm is a constant matrix on a cell's unknowns (the
-// empty-cell stiffness, seed §3.2); a PointTerm a force at one place of a point's domain (a
-// prescribed point motion's spring, docs/theory.md eq. 5.1; a footing's contact, eq. 13.6).
+// empty-cell stiffness, seed §3.2); a PointTerm a force at a point that depends on the point's
+// displacement (a prescribed point motion's spring, docs/theory.md eq. 5.1).
 #pragma once
 
 #include "geompm/core/types.hpp"
@@ -24,11 +24,9 @@ class PointTerm {
   virtual ~PointTerm() = default;
   /// Whether the term acts on point p.
   virtual bool acts(Index p) const = 0;
-  /// From the point to the place its force acts at (zero: at the point), carried by the step's
-  /// deformation: the place moves by u = sum_a W_a du_a, W_a = N_a + grad N_a . offset.
-  virtual Vec3 offset(Index /*p*/) const { return Vec3::Zero(); }
-  /// The force at the place as it enters f_int (minus the force on the point) and its stiffness
-  /// d force / d u. Called from several threads at once, each point by one thread only.
+  /// The force at the point as it enters f_int (minus the force on the point) and its stiffness
+  /// d force / d u, u = sum_a N_a du_a the point's displacement over the step. Called from several
+  /// threads at once, each point by one thread only.
   virtual void force(Index p, const Vec3& u, Vec3& force, Mat3& stiffness) = 0;
 };
 

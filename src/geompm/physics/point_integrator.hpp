@@ -95,10 +95,10 @@ class PointIntegrator final : public Contribution {
   template <class E>
   void pressure_stabilisation(Index ci, Eigen::Matrix<double, E::nodes, E::nodes>& S) const;
   PointStartState start_state(Index p) const;
-  /// The point terms' forces at point p into its local force and stiffness, with its weights N,
-  /// dN_dX and the local displacements du of its stencil.
-  template <int NS, int Dim, class Gradients, class Force, class Stiffness>
-  void add_point_terms(Index p, const Eigen::Matrix<double, NS, 1>& N, const Gradients& dN_dX,
+  /// The point terms' forces at point p into its local force and stiffness, with its weights N
+  /// and the local displacements du of its stencil.
+  template <int NS, int Dim, class Force, class Stiffness>
+  void add_point_terms(Index p, const Eigen::Matrix<double, NS, 1>& N,
                        const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent, Force& f,
                        Stiffness& K) const;
   /// The unknown of local unknown l of a cell or stencil of `count` active nodes: the

@@ -92,44 +92,29 @@ bool PointIntegrator::average_volume_change(Index ci, const Eigen::Matrix<double
   return true;
 }
 
-template <int NS, int Dim, class Gradients, class Force, class Stiffness>
+template <int NS, int Dim, class Force, class Stiffness>
 void PointIntegrator::add_point_terms(Index p, const Eigen::Matrix<double, NS, 1>& N,
-                                      const Gradients& dN_dX,
                                       const Eigen::Matrix<double, NS, Dim>& du, bool with_tangent,
                                       Force& f, Stiffness& K) const {
-  // A force F(u) at the place x_p + offset whose derivative is D = dF/du enters f_int as F W_a
-  // and the tangent as W_a W_b D, W the weights of that place: W = N at the point (a prescribed
-  // motion's spring, docs/theory.md eq. 5.1), W = N + grad N . offset elsewhere in its domain,
-  // carried by the step's deformation (a footing's contact, eq. 13.6).
+  // A force F(u) at the point whose derivative is D = dF/du enters f_int as F N_a and the
+  // tangent as N_a N_b D (a prescribed motion's spring, docs/theory.md eq. 5.1).
   const int nodes = static_cast<int>(N.size());
-  const auto add = [&](const Eigen::Matrix<double, NS, 1>& W, const Vec3& force,
-                       const Mat3& stiffness) {
+  for (PointTerm* term : point_terms_) {
+    if (!term->acts(p)) continue;
+    Vec3 u = Vec3::Zero(), force;
+    Mat3 stiffness;
+    u.template head<Dim>() = du.transpose() * N;
+    term->force(p, u, force, stiffness);
     for (int a = 0; a < nodes; ++a)
-      for (int i = 0; i < Dim; ++i) f(a * Dim + i) += force(i) * W(a);
-    if (!with_tangent) return;
+      for (int i = 0; i < Dim; ++i) f(a * Dim + i) += force(i) * N(a);
+    if (!with_tangent) continue;
     for (int a = 0; a < nodes; ++a)
       for (int b = 0; b < nodes; ++b) {
-        const double w = W(a) * W(b);
+        const double w = N(a) * N(b);
         for (int i = 0; i < Dim; ++i)
           for (int k = 0; k < Dim; ++k)
             if (stiffness(i, k) != 0.0) K(a * Dim + i, b * Dim + k) += w * stiffness(i, k);
       }
-  };
-  for (PointTerm* term : point_terms_) {
-    if (!term->acts(p)) continue;
-    const Vec3 offset = term->offset(p);
-    Vec3 u = Vec3::Zero(), force;
-    Mat3 stiffness;
-    if (offset == Vec3::Zero()) {
-      u.template head<Dim>() = du.transpose() * N;
-      term->force(p, u, force, stiffness);
-      add(N, force, stiffness);
-    } else {
-      const Eigen::Matrix<double, NS, 1> W = N + dN_dX * offset.template head<Dim>();
-      u.template head<Dim>() = du.transpose() * W;
-      term->force(p, u, force, stiffness);
-      add(W, force, stiffness);
-    }
   }
 }
 
@@ -260,8 +245,7 @@ bool PointIntegrator::integrate_cell_points(Index ci, Index point_end,
       admissible = false;
       continue;
     }
-    if (!point_terms_.empty())
-      add_point_terms(p, s.N, s.dN_dX, du_local, with_tangent, f_cell, K_cell);
+    if (!point_terms_.empty()) add_point_terms(p, s.N, du_local, with_tangent, f_cell, K_cell);
     commit(p, *state, volume, *stress, own_volume, volume_mismatch);
   }
   return admissible;

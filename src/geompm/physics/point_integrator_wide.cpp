@@ -150,7 +150,7 @@ bool PointIntegrator::integrate_wide_cell(Index ci, const Vector& du, bool with_
     if (!integrate_wide_point<Dim>(p, du, averaged, with_tangent, w, local)) return false;
     // Point terms act on the displacements, the first ns * Dim local unknowns.
     if (!point_terms_.empty())
-      add_point_terms(p, w.s.N, w.s.dN_dX, w.du_local, with_tangent, local.f, local.K);
+      add_point_terms(p, w.s.N, w.du_local, with_tangent, local.f, local.K);
     const int ns = static_cast<int>(w.nodes.size());
     local.dofs.resize(local.f.size());
     for (int l = 0; l < static_cast<int>(local.f.size()); ++l)

@@ -12,9 +12,9 @@ std::vector<char> driven(const std::vector<double>& stiffness) {
 }
 }  // namespace
 
-PointSprings::PointSprings(const GridSystem& grid, const MaterialPoints& points, const DofMap& dofs,
+PointSprings::PointSprings(const GridSystem& grid, const MaterialPoints& points,
                            PointTargets targets)
-    : PointForces("prescribed point motion", grid, points, dofs, driven(targets.stiffness), {},
+    : PointForces("prescribed point motion", grid, points, driven(targets.stiffness),
                   [this](Index p, const Vec3& u, Vec3& force, Mat3& stiffness) {
                     spring(p, u, force, stiffness);
                   }),

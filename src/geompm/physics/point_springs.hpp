@@ -23,8 +23,7 @@ struct PointTargets {
 
 class PointSprings final : public PointForces {
  public:
-  PointSprings(const GridSystem& grid, const MaterialPoints& points, const DofMap& dofs,
-               PointTargets targets);
+  PointSprings(const GridSystem& grid, const MaterialPoints& points, PointTargets targets);
   /// Per driven set: the force its springs exerted on the body at the last evaluation.
   void report(const Vector& du, Reactions& reactions) override;
   /// The forces the step's prescribed increments would take in the body's own stiffness,

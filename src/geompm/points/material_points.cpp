@@ -10,8 +10,7 @@
 namespace geompm {
 
 Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x, double vol,
-                          double density, Index cell_index, const Vec3& xi, const Vec3& half_size,
-                          const Vec3& top_offset) {
+                          double density, Index cell_index, const Vec3& xi, const Vec3& half_size) {
   const Index next_id = id.empty() ? 0 : id.back() + 1;
   id.push_back(next_id);
   body.push_back(body_index);
@@ -27,7 +26,6 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
   volume.push_back(vol);
   initial_volume.push_back(vol);
   initial_half_size.push_back(half_size);
-  initial_top_offset.push_back(top_offset);
   stress.push_back(Mat3::Zero());
   deformation_gradient.push_back(Mat3::Identity());
   domain_stretch.push_back(1.0);
@@ -58,7 +56,6 @@ void for_each_field(MaterialPoints& p, Fn&& fn) {
   fn(p.volume);
   fn(p.initial_volume);
   fn(p.initial_half_size);
-  fn(p.initial_top_offset);
   fn(p.stress);
   fn(p.deformation_gradient);
   fn(p.domain_stretch);

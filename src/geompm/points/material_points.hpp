@@ -29,9 +29,8 @@ struct MaterialPoints {
   std::vector<double> mass;
   std::vector<double> volume;  // current; per radian in axisymmetry
   std::vector<double> initial_volume;
-  std::vector<Vec3> initial_half_size;   // the seeded domain's half-lengths (SeedPoint::half_size)
-  std::vector<Vec3> initial_top_offset;  // from the point to its seeded domain's top (eq. 13.1)
-  std::vector<Mat3> stress;              // Cauchy, tension positive
+  std::vector<Vec3> initial_half_size;  // the seeded domain's half-lengths (SeedPoint::half_size)
+  std::vector<Mat3> stress;             // Cauchy, tension positive
   std::vector<Mat3> deformation_gradient;  // total F (the averaged F^ of a mixed point, §12)
   /// How much a mixed point's own volume change, along the grid's directions, has exceeded its
   /// cell's average over all steps so far, as a stretch: its domain follows the grid's motion,
@@ -49,10 +48,10 @@ struct MaterialPoints {
 
   Index size() const { return static_cast<Index>(id.size()); }
 
-  /// Appends one point with zero velocity, zero stress and F = b_e = I; `half_size` and
-  /// `top_offset`: the region the point represents, as seeding found it (SeedPoint).
+  /// Appends one point with zero velocity, zero stress and F = b_e = I; `half_size`: the region
+  /// the point represents, as seeding found it (SeedPoint).
   Index add(Index body_index, Index material_index, const Vec3& x, double volume, double density,
-            Index cell, const Vec3& xi, const Vec3& half_size, const Vec3& top_offset);
+            Index cell, const Vec3& xi, const Vec3& half_size);
 
   /// The deformation gradient of point p's domain: F scaled by its domain stretch on the first
   /// `dim` directions (the grid's).

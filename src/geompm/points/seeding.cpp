@@ -77,49 +77,12 @@ double volume_density(const Eigen::Matrix<double, E::nodes, E::dim>& X, const ty
   return d;
 }
 
-// The top of a simplex sub-cell (its vertices x_k at the highest elevation) as the contact's
-// domain: half-widths along the horizontal axes and the offset from the point to its centroid.
-template <int Dim>
-void simplex_top(const std::vector<Eigen::Matrix<double, Dim, 1>>& x, SeedPoint& p) {
-  constexpr int v = Dim - 1;
-  double top = -std::numeric_limits<double>::max(), extent = 0.0;
-  for (const auto& xk : x) top = std::max(top, xk(v));
-  for (const auto& a : x)
-    for (const auto& b : x) extent = std::max(extent, (a - b).norm());
-  std::vector<Eigen::Matrix<double, Dim, 1>> face;
-  for (const auto& xk : x)
-    if (xk(v) >= top - 1e-9 * extent) face.push_back(xk);
-  Eigen::Matrix<double, Dim, 1> centre = Eigen::Matrix<double, Dim, 1>::Zero(), lo, hi;
-  lo.setConstant(std::numeric_limits<double>::max());
-  hi = -lo;
-  for (const auto& xk : face) {
-    centre += xk / double(face.size());
-    lo = lo.cwiseMin(xk);
-    hi = hi.cwiseMax(xk);
-  }
-  p.top_offset = Vec3::Zero();
-  p.top_offset.head<Dim>() = centre - p.position.head<Dim>();
-  p.half_size = Vec3::Zero();
-  p.half_size(v) = p.top_offset(v);
-  if constexpr (Dim == 2) {
-    if (face.size() == 2) p.half_size(0) = 0.5 * (hi(0) - lo(0));
-  } else if (face.size() == 3) {
-    // A horizontal triangle: the box of its area with the aspect of its bounding box.
-    const double area = 0.5 * std::abs((face[1] - face[0]).x() * (face[2] - face[0]).y() -
-                                       (face[2] - face[0]).x() * (face[1] - face[0]).y());
-    const double box = (hi(0) - lo(0)) * (hi(1) - lo(1));
-    const double scale = box > 0.0 ? std::sqrt(area / box) : 0.0;
-    for (int t = 0; t < 2; ++t) p.half_size(t) = 0.5 * scale * (hi(t) - lo(t));
-  }
-}
-
-// corners: the vertices of the point's sub-cell in reference coordinates. A box (quadrilateral
-// or hexahedral sub-cell): half the extent of their images along each axis, the exact
-// half-lengths of the sub-cell on an axis-aligned cell, the initial particle domain of GIMP
-// (docs/theory.md eq. 9.4). A simplex: its top face (simplex_top, SeedPoint::half_size).
+// corners: the vertices of the point's sub-cell in reference coordinates; the half-lengths are half
+// the extent of their images along each axis, the exact half-lengths of the sub-cell on an
+// axis-aligned cell, the initial particle domain of GIMP (docs/theory.md eq. 9.4).
 template <class E, class Corners>
 SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typename E::Local& xi,
-                     double volume, const Corners& corners, bool simplex) {
+                     double volume, const Corners& corners) {
   constexpr int dim = E::dim;
   SeedPoint p;
   p.xi = Vec3::Zero();
@@ -129,10 +92,6 @@ SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typ
   p.volume = volume;
   std::vector<Eigen::Matrix<double, dim, 1>> images;
   for (const auto& corner : corners) images.push_back(X.transpose() * E::shape(corner));
-  if (simplex) {
-    simplex_top<dim>(images, p);
-    return p;
-  }
   Eigen::Matrix<double, dim, 1> lo, hi;
   lo.setConstant(std::numeric_limits<double>::max());
   hi = -lo;
@@ -142,8 +101,6 @@ SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typ
   }
   p.half_size = Vec3::Zero();
   p.half_size.head<dim>() = 0.5 * (hi - lo);
-  p.top_offset = Vec3::Zero();
-  p.top_offset(dim - 1) = p.half_size(dim - 1);
   return p;
 }
 
@@ -180,7 +137,7 @@ std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E:
       for (int d = 0; d < dim; ++d) corner(d) = centre(d) + (c >> d & 1 ? 0.5 : -0.5) * h;
       corners.push_back(corner);
     }
-    out.push_back(make_point<E>(X, centre, volume, corners, false));
+    out.push_back(make_point<E>(X, centre, volume, corners));
   }
   return out;
 }
@@ -209,7 +166,7 @@ std::vector<SeedPoint> seed_triangle(const Eigen::Matrix<double, E::nodes, E::di
       const Eigen::Vector2d xi = bary[q][0] * t[0] + bary[q][1] * t[1] + bary[q][2] * t[2];
       volume += w[q] * area * volume_density<E>(X, xi, axisymmetric);
     }
-    out.push_back(make_point<E>(X, (t[0] + t[1] + t[2]) / 3.0, volume, t, true));
+    out.push_back(make_point<E>(X, (t[0] + t[1] + t[2]) / 3.0, volume, t));
   }
   return out;
 }
@@ -225,7 +182,7 @@ std::vector<SeedPoint> seed_tetrahedron(const Eigen::Matrix<double, E::nodes, E:
     const Eigen::Vector3d centre = (t[0] + t[1] + t[2] + t[3]) / 4.0;
     // The Tet4 map is affine: the density is constant.
     out.push_back(
-        make_point<E>(X, centre, reference_volume * volume_density<E>(X, centre, false), t, true));
+        make_point<E>(X, centre, reference_volume * volume_density<E>(X, centre, false), t));
   }
   return out;
 }

@@ -17,17 +17,10 @@ struct SeedPoint {
   Vec3 xi;        // reference coordinates in the cell
   Vec3 position;  // physical position
   double volume;  // per radian in axisymmetry
-  /// The point's domain as GIMP and the rigid-footing contact see it. Quadrilateral and
-  /// hexahedral sub-cells: half their extent along each axis, a box centred on the point whose
-  /// top is its top face. Triangles and tetrahedra (which GIMP does not take), whose boxes would
-  /// reach above the sub-cell's top face and overlap their neighbours': along the horizontal
-  /// axes, half the width of the sub-cell's top face (the sides of a box of the face's area in
-  /// 3D; zero where the top is a vertex or, in 3D, an edge), so that the top faces at a flat
-  /// surface tile it; along the vertical axis, the height from the point to its top.
+  /// The point's domain as GIMP sees it: half the sub-cell's extent along each axis, a box
+  /// centred on the point (on triangles and tetrahedra, which GIMP does not take, the box of the
+  /// sub-cell, which overlaps its neighbours').
   Vec3 half_size;
-  /// From the point to the middle of its domain's top (docs/theory.md eq. 13.1): (0, half height)
-  /// for a box; for a simplex, to the centroid of its top vertices.
-  Vec3 top_offset;
 };
 
 /// The allowed counts for a cell type (for messages and the model reader).

@@ -146,23 +146,6 @@ struct GridMotion {
   SourceLocation source;
 };
 
-/// A rigid footing (docs/theory.md §13): a rigid body with a flat horizontal base, acting on the
-/// soil points beneath it by penalty contact, its position prescribed (displacement control).
-struct RigidFooting {
-  std::string name;
-  double base = 0.0;  // elevation of the base (y in 2D, z in 3D) at the start of the phase
-  /// The footprint at the start of the phase: [low, high] along x (the radius in axisymmetry)
-  /// and, in 3D, along y.
-  std::array<double, 2> x = {0.0, 0.0}, y = {0.0, 0.0};
-  bool rough = false;     // rough: the soil sticks to the base; smooth: normal force only
-  bool velocity = false;  // false: the expressions give the displacement since phase start
-  std::array<std::string, 3> components;  // every component of the model given
-  std::vector<std::string> bodies;        // the bodies it touches; empty: every body
-  std::optional<double> penalty;          // kappa (stress per length), or ...
-  double penalty_factor = 10.0;           // ... kappa = factor x E / h of each point
-  SourceLocation source;
-};
-
 /// A force on a point set (load control), shared among its points in proportion to mass.
 struct PointSetLoad {
   std::string point_set;
@@ -315,7 +298,6 @@ struct Phase {
   std::vector<Fixity> fixities;
   std::vector<PrescribedMotion> motions;
   std::vector<GridMotion> grid_motions;
-  std::vector<RigidFooting> footings;
   std::vector<PointSetLoad> loads;
   std::vector<StructureDrive> structure_drives;  // structures not listed: free
   std::vector<SurfaceLoad> surface_loads;
@@ -329,7 +311,6 @@ struct History {
                           // strain_energy | newton_iterations | time_step | load
   std::string boundary;   // reaction on a boundary or node set; displacement of its grid motion
   std::string point_set;  // reaction, displacement, velocity, position, load of a point set
-  std::string footing;    // reaction and displacement of a rigid footing
   std::string structure;  // reaction, moment, displacement, rotation, position of a structure
   int component = -1;     // 0, 1, 2; -1 for scalars
   /// A deformable structure's displacement, phase_displacement, position: the mean of these

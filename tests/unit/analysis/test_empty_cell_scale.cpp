@@ -11,10 +11,10 @@
 namespace geompm {
 namespace {
 
-// The smooth rigid strip example (clay, E = 500 s_u; the rigid footing is no body) pushed to
-// 0.02 B: the heave beside the footing moves into empty cells, so their stiffness enters.
+// The smooth rigid strip (a structure in contact; clay, E = 500 s_u; the footing is no body) pushed
+// to 0.02 B: the heave beside the footing moves into empty cells, so their stiffness enters.
 spec::Model short_smooth_strip() {
-  auto spec = testing::read_example("strip_footing/strip_footing_smooth.yaml");
+  auto spec = testing::read_example("structures/strip_footing_smooth.yaml");
   spec.phases.at(0).duration = 0.2;
   return spec;
 }

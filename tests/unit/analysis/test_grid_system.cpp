@@ -1,8 +1,7 @@
 // The assembled tangent of the grid system against a finite difference of its internal force,
 // for standard MPM, DDMP and GIMP, in plane strain, axisymmetry and 3D, with points spread over
 // several cells and some held by prescribed-motion springs, in the displacement and the mixed p-u
-// formulation (docs/theory.md eqs. 3.9, 5.1, 6.1, 8.2, 9.1-9.5, 11.1-11.7), and with the penalty
-// contact of a smooth or rough rigid footing (eqs. 12.1-12.6). GIMP points are moved
+// formulation (docs/theory.md eqs. 3.9, 5.1, 6.1, 8.2, 9.1-9.5, 11.1-11.7). GIMP points are moved
 // off their seeding positions first, so that their domains straddle cell boundaries (and the axis
 // and mesh boundary, where they are clipped).
 #include <gtest/gtest.h>
@@ -15,7 +14,6 @@
 #include <optional>
 #include <random>
 
-#include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/interpolation/gimp_weights.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
 #include "grid_harness.hpp"
@@ -31,11 +29,8 @@ using testing::mohr_coulomb_parameters;
 using testing::scatter_points;
 using testing::tresca_parameters;
 
-enum class FootingChoice { None, Smooth, Rough };
-
 void check_assembled_tangent(const std::string& example, GridInterpolation interpolation,
                              const MaterialChoice* choice = nullptr,
-                             FootingChoice footing = FootingChoice::None,
                              std::optional<CellType> cell = std::nullopt) {
   auto spec = testing::read_example(example);
   if (cell) {  // the example's generated mesh, other cells (the model's own interpolation: the
@@ -81,53 +76,6 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   }
   grid.set_point_targets(stiffness, target, mask);
 
-  // A rigid footing pressed into the top of the body (eqs. 12.1-12.6): its base half a domain
-  // below the top of the highest points' domains, its footprint over the middle of the body (from
-  // the axis in axisymmetry) with edges that cut through point domains, so that overlaps, their
-  // derivatives and (rough) slip from offset anchors are all exercised.
-  const int dim = model->mesh.dim(), v = dim - 1;
-  const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
-  std::vector<FootingContactPoint> contact(n_points);
-  std::vector<Vec3> offset(n_points, Vec3::Zero());
-  FootingPose pose;
-  if (footing != FootingChoice::None) {
-    Vec3 low = Vec3::Constant(1e30), high = Vec3::Constant(-1e30);
-    double top = -1e30, half_v = 0.0;
-    for (Index p = 0; p < n_points; ++p) {
-      const auto& pts = model->points;
-      contact[p].half =
-          particle_half_lengths(pts.initial_half_size[p], pts.deformation_gradient[p], dim);
-      offset[p](v) = contact[p].half(v);  // the law acts at the top of the point's domain
-      offset[p](0) = 0.3 * contact[p].half(0);
-      contact[p].position = pts.position[p] + offset[p];
-      contact[p].half(v) = 0.0;
-      contact[p].kappa = 10 * model->largest_modulus() / offset[p](v);
-      contact[p].rough = footing == FootingChoice::Rough;
-      contact[p].anchor = pts.position[p] + Vec3(2e-3, -1e-3, 1.5e-3) * (p % 3 - 1.0);
-      // Every other point first touches within the step, from below the base (eq. 13.4a).
-      contact[p].anchored = p % 2 == 0;
-      if (!contact[p].anchored) contact[p].start_gap = -0.4 * offset[p](v);
-      low = low.cwiseMin(pts.position[p] - contact[p].half);
-      high = high.cwiseMax(pts.position[p] + contact[p].half);
-      if (contact[p].position(v) > top) {
-        top = contact[p].position(v);
-        half_v = offset[p](v);
-      }
-    }
-    pose.base = top - 0.5 * half_v;
-    for (int t = 0; t < v; ++t) {
-      const double w = high(t) - low(t);
-      pose.low(t) = axisymmetric ? 0.0 : low(t) + 0.31 * w;
-      pose.high(t) = low(t) + 0.57 * w;
-    }
-    pose.displacement = Vec3(1e-3, 2e-3, -1e-3);
-    grid.set_point_force_law(
-        std::vector<char>(n_points, 1), offset, [&](Index p, const Vec3& u, Vec3& f, Mat3& K) {
-          const auto c = footing_contact(pose, contact[p], u, dim, axisymmetric);
-          f = c.force;
-          K = c.stiffness;
-        });
-  }
   grid.set_constraints(std::vector<char>(grid.num_dofs(), 0));
 
   std::mt19937 rng(7);
@@ -254,36 +202,6 @@ TEST(GridSystemTangent, FBarMohrCoulomb3D) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard,
                           &f_bar_mohr_coulomb);
 }
-TEST(GridSystemTangent, FBarRigidFootingRoughPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &f_bar_tresca,
-                          FootingChoice::Rough);
-}
-
-TEST(GridSystemTangent, RigidFootingSmoothPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, nullptr,
-                          FootingChoice::Smooth);
-}
-TEST(GridSystemTangent, RigidFootingRoughMixedPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard, &mixed_tresca,
-                          FootingChoice::Rough);
-}
-TEST(GridSystemTangent, RigidFootingRoughGimpPlaneStrain) {
-  check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp, nullptr,
-                          FootingChoice::Rough);
-}
-TEST(GridSystemTangent, RigidFootingSmoothAxisymmetric) {
-  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard,
-                          &mixed_tresca, FootingChoice::Smooth);
-}
-TEST(GridSystemTangent, RigidFootingRoughAxisymmetric) {
-  check_assembled_tangent("column/column_axisymmetric.yaml", GridInterpolation::Standard, nullptr,
-                          FootingChoice::Rough);
-}
-TEST(GridSystemTangent, RigidFootingRoughThreeD) {
-  check_assembled_tangent("column/column_3d.yaml", GridInterpolation::Standard, nullptr,
-                          FootingChoice::Rough);
-}
-
 TEST(GridSystemTangent, StandardPlaneStrain) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Standard);
 }
@@ -296,22 +214,22 @@ TEST(GridSystemTangent, DualDomainAxisymmetric) {
 // DDMP's smoothed gradients (docs/theory.md §8) on every cell type that carries points.
 TEST(GridSystemTangent, DualDomainTri3) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain, nullptr,
-                          FootingChoice::None, CellType::Tri3);
+                          CellType::Tri3);
 }
 TEST(GridSystemTangent, DualDomainTet4) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain, nullptr,
-                          FootingChoice::None, CellType::Tet4);
+                          CellType::Tet4);
 }
 TEST(GridSystemTangent, DualDomainHex8) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain);
 }
 TEST(GridSystemTangent, DualDomainMixedMohrCoulombTri3) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::DualDomain,
-                          &mixed_mohr_coulomb, FootingChoice::None, CellType::Tri3);
+                          &mixed_mohr_coulomb, CellType::Tri3);
 }
 TEST(GridSystemTangent, DualDomainFBarMohrCoulombTet4) {
   check_assembled_tangent("column/column_3d.yaml", GridInterpolation::DualDomain,
-                          &f_bar_mohr_coulomb, FootingChoice::None, CellType::Tet4);
+                          &f_bar_mohr_coulomb, CellType::Tet4);
 }
 TEST(GridSystemTangent, GimpPlaneStrain) {
   check_assembled_tangent("oedometer/oedometer.yaml", GridInterpolation::Gimp);

@@ -11,7 +11,6 @@
 #include <memory>
 #include <random>
 
-#include "geompm/boundary/rigid_footing.hpp"
 #include "geompm/interpolation/gimp_weights.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
 #include "grid_harness.hpp"

@@ -16,7 +16,7 @@ using namespace geompm::testing;
 
 // The cases edit kValidModel (model_reader_support.hpp).
 
-// A rigid footing, inserted in the second phase of kValidModel by the cases that need one.
+// A former penalty rigid footing, inserted in the second phase of kValidModel.
 const std::string kFooting =
     "    rigid_footings:\n"
     "      - {name: plate, base: 55, x: [0, 0.5], contact: smooth, displacement: [0, "
@@ -401,41 +401,19 @@ const std::vector<MalformedCase> kMalformedCases = {
      "phases[1].prescribed_motion[0].displacement",
      "expected a list of 2 components"},
 
-    // Rigid footings (docs/user-guide.md, rigid_footings).
-    {"footing_footprint_reversed",
-     {{"    loads:\n", kFooting + "    loads:\n"}, {"x: [0, 0.5]", "x: [0.5, 0]"}},
-     "[0.5, 0]",
-     "phases[1].rigid_footings[0].x",
-     "low (0.5) must be less than high (0)"},
-    {"footing_contact_unknown",
-     {{"    loads:\n", kFooting + "    loads:\n"}, {"contact: smooth", "contact: sticky"}},
-     "sticky",
-     "phases[1].rigid_footings[0].contact",
-     "rough"},
-    {"footing_with_a_free_component",
-     {{"    loads:\n", kFooting + "    loads:\n"}, {"[0, \"-0.2*t\"]", "[~, \"-0.2*t\"]"}},
-     "~, \"-0.2*t",
-     "phases[1].rigid_footings[0].displacement[0]",
-     "a value is needed for every component"},
-    {"footing_with_both_penalties",
-     {{"    loads:\n", kFooting + "    loads:\n"},
-      {"contact: smooth", "contact: smooth, penalty: 1.0e6, penalty_factor: 10"}},
-     "penalty_factor",
-     "phases[1].rigid_footings[0].penalty_factor",
-     "not both"},
-    {"footing_footprint_along_y_in_2d",
-     {{"    loads:\n", kFooting + "    loads:\n"}, {"x: [0, 0.5]", "x: [0, 0.5], y: [0, 1]"}},
-     "y: [0, 1]",
-     "phases[1].rigid_footings[0].y",
-     "remove 'y'"},
-    {"history_of_an_unknown_footing",
-     {{"    loads:\n", kFooting + "    loads:\n"},
-      {"    - {quantity: kinetic_energy}\n",
+    // The former penalty rigid footings: a model that still has them is told what replaced them.
+    {"rigid_footings_replaced_by_structures",
+     {{"    loads:\n", kFooting + "    loads:\n"}},
+     "rigid_footings:",
+     "phases[1].rigid_footings",
+     "rigid footings are structures in contact with the soil"},
+    {"history_of_a_footing",
+     {{"    - {quantity: kinetic_energy}\n",
        "    - {quantity: kinetic_energy}\n    - {quantity: reaction, footing: pile, component: "
        "y}\n"}},
      "pile",
      "output.history[3].footing",
-     "no rigid footing named 'pile'; defined: plate"},
+     "measure the footing with structure: <name>"},
 
     // Conflicts and duplicates.
     {"motion_and_load_on_one_point_set",

@@ -70,7 +70,7 @@ inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinemat
         double volume = E::quadrature_weight(q) * jacobian<T>(X, xi).determinant();
         if (radial) volume *= x(0);
         block->points.add(body, body, x, volume, block->materials[body]->density(), c, local,
-                          Vec3::Zero(), Vec3::Zero());
+                          Vec3::Zero());
       }
     }
   });

@@ -18,7 +18,7 @@ MaterialPoints some_points() {
   for (int k = 0; k < 5; ++k) {
     const double s = 1.0 / (k + 3.0);
     p.add(k % 2, k % 3, Vec3(s, 2 * s, 0.1 * k), 0.7 * s, 1.9, 10 + k, Vec3(-s, s, 0.0),
-          Vec3(0.5 * s, 0.25, 0.0), Vec3(0.0, 0.5 * s, 0.0));
+          Vec3(0.5 * s, 0.25, 0.0));
     p.sets[k] = 0b101u << k;
     p.displacement[k] = Vec3(1e-300, -s, 3.0);
     p.phase_displacement[k] = Vec3(s, s * s, -s);
@@ -46,7 +46,7 @@ TEST(MaterialPointsState, LoadsWhatWasSavedBitForBit) {
   ByteWriter out;
   saved.save(out);
   MaterialPoints loaded = some_points();
-  loaded.add(0, 0, Vec3::Zero(), 1, 1, 0, Vec3::Zero(), Vec3::Zero(), Vec3::Zero());  // replaced
+  loaded.add(0, 0, Vec3::Zero(), 1, 1, 0, Vec3::Zero(), Vec3::Zero());  // replaced
   ByteReader in(out.bytes(), "points");
   loaded.load(in);
   ASSERT_EQ(loaded.size(), saved.size());
@@ -64,7 +64,6 @@ TEST(MaterialPointsState, LoadsWhatWasSavedBitForBit) {
   EXPECT_TRUE(same_bytes(loaded.volume, saved.volume));
   EXPECT_TRUE(same_bytes(loaded.initial_volume, saved.initial_volume));
   EXPECT_TRUE(same_bytes(loaded.initial_half_size, saved.initial_half_size));
-  EXPECT_TRUE(same_bytes(loaded.initial_top_offset, saved.initial_top_offset));
   EXPECT_TRUE(same_bytes(loaded.stress, saved.stress));
   EXPECT_TRUE(same_bytes(loaded.deformation_gradient, saved.deformation_gradient));
   EXPECT_TRUE(same_bytes(loaded.domain_stretch, saved.domain_stretch));
@@ -73,11 +72,11 @@ TEST(MaterialPointsState, LoadsWhatWasSavedBitForBit) {
   EXPECT_TRUE(same_bytes(loaded.internal, saved.internal));
   EXPECT_TRUE(same_bytes(loaded.cell, saved.cell));
   EXPECT_TRUE(same_bytes(loaded.local, saved.local));
-  // Nothing but the 23 fields is written: their bytes (bytes_per_point counts them by capacity;
+  // Nothing but the 22 fields is written: their bytes (bytes_per_point counts them by capacity;
   // a copy holds no spare capacity) and one count each.
   const MaterialPoints compact = saved;
   EXPECT_DOUBLE_EQ(static_cast<double>(out.bytes().size()),
-                   compact.bytes_per_point() * compact.size() + 23 * sizeof(std::uint64_t));
+                   compact.bytes_per_point() * compact.size() + 22 * sizeof(std::uint64_t));
 }
 
 TEST(MaterialPointsState, RefusesArraysOfDifferentLengths) {
