@@ -1,8 +1,7 @@
-// The numerics with which the strip footing studies of docs/validation.md §4-§5 were measured,
-// when the strip examples still carried them (until 2026-12-07; the rigid strips now run the
-// defaults: each point its own volume change, 1e-4 of the soil's E in the empty cells, the total
-// pressure equation). A test that asserts one of those measurements sets them, so that it checks
-// the option it was measured with; docs/validation.md gives the defaults' numbers beside them.
+// The numerics with which the steel-block strip footing studies of docs/validation.md §4-§5 were
+// measured, when the example still carried them (until 2026-12-07). A test that asserts one of
+// those measurements sets them, so that it checks the option it was measured with;
+// docs/validation.md gives the defaults' numbers beside them.
 #pragma once
 
 #include <string>
@@ -17,15 +16,6 @@ namespace geompm::testing {
 inline std::string as_measured_steel_block(std::string text) {
   text = with_numerics(text, "mixed_volume", "cell_average");
   return with_numerics(text, "empty_cell_stiffness", "2.0e-4");
-}
-
-/// The rigid (penalty) strips of examples/strip_footing/ as measured: the incremental pressure
-/// equation with the fitted start, and for the smooth one the ghost penalty of 1e-3 (its energy
-/// line search it still carries).
-inline std::string as_measured_rigid_strip(std::string text, bool smooth) {
-  text = with_numerics(text, "mixed_pressure_equation", "incremental");
-  text = with_numerics(text, "mixed_pressure_start", "fitted");
-  return smooth ? with_numerics(text, "ghost_penalty", "1.0e-3") : text;
 }
 
 }  // namespace geompm::testing

@@ -98,7 +98,8 @@ TEST(ContactFootings, RigidCirclesOnDOver20ComeWithinTheMeshsOverEstimate) {
   // Axisymmetric, per radian: q / s_u = 8 x force (D = 1). Measured at 0.1 D: rough 6.19
   // (+2.4 % from 6.05), smooth 5.76 (+1.2 % from 5.69); over 0.08-0.1 D 6.14 and 5.71. Both are
   // within the target (docs/validation.md §17), and above N_c: the axisymmetric mechanism on
-  // h = D/20 over-estimates it, as the penalty footings of §7 show (+6.9 % to +16.7 %).
+  // h = D/20 over-estimates it, as the steel block of §7 and the former penalty footings showed
+  // (+6.9 % to +18.2 %).
   const Curve smooth = reference_curve("circular_footing_smooth", 8.0);
   const Curve rough = reference_curve("circular_footing_rough", 8.0);
   constexpr double kSmooth = 5.69, kRough = 6.05;

@@ -1,8 +1,8 @@
 // Footings against bearing-capacity theory (docs/references.md §3; docs/validation.md
-// §4-§8): the models of examples/strip_footing/, circular_footing/ and mohr_coulomb_footing/ on
+// §4-§8): the models of examples/strip_footing/, structures/ and mohr_coulomb_footing/ on
 // their own mesh (10 cells under the footing's half-width, h = B/20) and, for the rigid-plastic
 // limit, on h = B/10 and B/40 too; each run taking 2-40 s, the whole file about five minutes on
-// one core, plus two minutes for the circular footing on D/40. What is asserted, and why:
+// one core. What is asserted, and why:
 // - the mixed p-u answer does not depend on nu (0.49 against 0.4999, < 2 %, references §3) and
 //   Newton stays at <= 10 iterations per step through plastic flow (issue 3);
 // - the displacement formulation locks at nu = 0.4999 (q/s_u far above Prandtl's 2 + pi) while
@@ -23,10 +23,8 @@
 //   read back from the grid file with meshio), which the total pressure equation does show;
 // - in the rigid-plastic limit (stiff clay, no point crossing a cell, §5) the rigid footings
 //   level off above 2 + pi, fall with h, and smooth <= rough;
-// - with the incremental pressure equation (docs/theory.md eqs. 11.8-11.9): the rough rigid
-//   circular footing on h = D/40 within +5 % of Cox, Eason & Hopkins' N_c at 0.1 D with at most
-//   10 Newton iterations a step (about two minutes), and standard MPM carrying the
-//   large-deformation strip to 1 B (docs/validation.md §6, §7). The steel block uses it started
+// - with the incremental pressure equation (docs/theory.md eqs. 11.8-11.9): standard MPM carrying
+//   the large-deformation strip to 1 B (docs/validation.md §6). The steel block uses it started
 //   from the fitted last pressure (eq. 11.11).
 // Not asserted: the footings at h = B/40 (with the total pressure equation below the band with
 // 2x2 points per cell, whose quadrature is too soft after cell crossings, with 3x3 points they
@@ -65,11 +63,11 @@ using testing::run_footing;
 constexpr double kPrandtl =
     2.0 + std::numbers::pi;  // q_u / s_u of a rigid strip on Tresca soil (Prandtl 1921)
 
-// The model with the code's defaults where the strip examples differ from them: the pressure
-// equation (the examples' incremental one, eqs. 11.8-11.9) and its start (fitted, eq. 11.11) in
-// `numerics`, and the smooth rigid strip's ghost penalty (`numerics`, eq. 6.3) and energy line
-// search (`newton`, §4.4), whatever their values (as the former report script did,
-// the same edit).
+// The model with the code's defaults where the steel-block example differs from them: the pressure
+// equation (its incremental one, eqs. 11.8-11.9) and its start (fitted, eq. 11.11) in `numerics`,
+// and (for a model that has them) the ghost penalty (`numerics`, eq. 6.3) and the energy line
+// search (`newton`, §4.4), whatever their values (as the former report script did, the same
+// edit).
 std::string default_numerics(std::string text) {
   text = testing::with_numerics(text, "mixed_pressure_start", "points");
   text = testing::with_numerics(text, "mixed_pressure_equation", "total");

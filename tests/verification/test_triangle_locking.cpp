@@ -165,17 +165,16 @@ std::string rigid_footing_instead(std::string t, const std::string& contact) {
 }
 
 TEST(TriangleLocking, SmoothAndRoughRigidFootingsOnCrossedTrianglesKeepMartinsRatio) {
-  // The same model with a rigid footing of the block's footprint (penalty contact at the points'
-  // domain tops, docs/theory.md §13) instead of the steel block. On triangles the footing touches
-  // the top faces of the points' sub-cells; a smooth base lets the soil slide, and Martin's exact
-  // solutions put the rough footing's N_gamma at 14.75 / 7.65 = 1.93 times the smooth one's.
-  // Measured (h = B/10): 24.03 rough (the steel block: 24.17) and 12.11 smooth, both about 60 %
-  // above Martin's values (docs/validation.md §11 has the same runs; with the empty cells at 2e-4
-  // of the soil's E, when the listed steel set their scale, they were 24.14 and 12.31).
+  // The same model with a rigid structure of the block's footprint in level-set contact
+  // (docs/theory.md §17-§18) instead of the steel block. A smooth base lets the soil slide, and
+  // Martin's exact solutions put the rough footing's N_gamma at 14.75 / 7.65 = 1.93 times the
+  // smooth one's. Measured (h = B/10): 23.78 rough (the steel block: 24.17) and 12.00 smooth,
+  // ratio 1.98, both about 60 % above Martin's values (the former penalty footings: 24.03 and
+  // 12.11).
   const auto text = [](const std::string& contact) {
-    // The empty cells' stiffness of the rigid-footing examples (docs/validation.md §4 (iv)): with
-    // 1e-6 of the soil's E the air nodes beside the footing's edge keep Newton's corrections from
-    // converging on the sharp cone (the rough run stops at 0.00048 B).
+    // The default 1e-4 of the soil's E in the empty cells, in place of the 2e-4 the N_gamma model
+    // was measured with (with 1e-6 the former penalty footing's rough run stopped at 0.00048 B on
+    // the sharp cone).
     return meshed(testing::with_numerics(rigid_footing_instead(ngamma_rigid_plastic(1), contact),
                                          "empty_cell_stiffness", "1.0e-4"),
                   5, Mesh::Crossed);
@@ -240,11 +239,12 @@ TEST(TriangleLocking, RoundedApexCarriesTheNgammaRunThroughOnBOver40) {
 }
 
 TEST(TriangleLocking, RigidFootingNgammaCarriesNothingOnTheEmptyCells) {
-  // The rough rigid footing of validation.md §13 (rounded apex, c = 0.1 kPa, 10 times stiffer and
-  // pushed 0.0002 B, h = B/10): its model holds no steel, so the empty cells take 1e-6 of the
-  // soil's E, and a tenth of that changes nothing. With 2e-4 of it (1e-6 of the steel's, what the
-  // model had while the listed steel set the scale: the fix of docs/theory.md eq. 6.1) the empty
-  // cells resist the heave beside the footing and carry load. Measured: 23.705, 23.704, 23.965.
+  // The rough rigid structure (rounded apex, c = 0.1 kPa, 10 times stiffer and pushed 0.0002 B,
+  // h = B/10): its model holds no steel, so the empty cells take 1e-6 of the soil's E, and a tenth
+  // of that changes nothing. With 2e-4 of it (1e-6 of the steel's, what the model had while the
+  // listed steel set the scale: the fix of docs/theory.md eq. 6.1) the empty cells resist the
+  // heave beside the footing and carry load. Measured: 23.501, 23.500, 23.698 (the former penalty
+  // footing: 23.705, 23.704, 23.965).
   const auto text = [](const std::string& empty_cells) {
     auto t = rounded_apex(ngamma_rigid_plastic(10));
     t = testing::replace_once(

@@ -461,15 +461,14 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   for (const spec::Structure& structure : spec.structures) {
     model->structures.push_back(build_structure(structure, spec, model->material_pointers()));
     model->contacts.push_back(contact_pair(spec, structure, model->structures.size() - 1));
+    check_structure_reaches_mesh(*model, model->structures.size() - 1, structure);
   }
   build_fem_region(spec, *model);
   seed_bodies(spec, *model);
   add_point_sets(spec, *model);
   check_boundaries(spec, mesh);
-  for (std::size_t s = 0; s < spec.structures.size(); ++s) {
-    check_structure_reaches_mesh(*model, s, spec.structures[s]);
+  for (std::size_t s = 0; s < spec.structures.size(); ++s)
     check_adhesion_strength(*model, model->contacts[s], spec.structures[s].contact);
-  }
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
   // (docs/theory.md §10), before any step.
   apply_initial_stresses(*model);

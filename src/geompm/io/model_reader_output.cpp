@@ -78,12 +78,12 @@ spec::History read_history(const yaml::Node& node, const Context& context,
   quantities.insert(quantities.end(), scalar_quantities.begin(), scalar_quantities.end());
   const std::string& quantity = history.quantity = section.required("quantity").choice(quantities);
 
+  if (auto footing = section.find("footing"))
+    footing->fail(
+        "rigid footings are structures now: measure the footing with structure: <name> "
+        "(quantity displacement, or contact_force for the force the soil exerts on it)");
   if (contains(vector_quantities, quantity)) {
     // A boundary (or node set) has a reaction, and the displacement its grid motion prescribes.
-    if (auto footing = section.find("footing"))
-      footing->fail(
-          "rigid footings are structures now: measure the footing with structure: <name> "
-          "(quantity displacement, or contact_force for the force the soil exerts on it)");
     const bool on_boundary = quantity == "reaction" || quantity == "displacement";
     const std::string target =
         on_boundary ? section.exactly_one_of({"boundary", "point_set"}) : "point_set";

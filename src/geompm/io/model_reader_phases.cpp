@@ -448,9 +448,10 @@ spec::Phase read_phase(const yaml::Node& node, const Context& context,
   if (auto footings = section.find("rigid_footings"))
     footings->fail(
         "rigid footings are structures in contact with the soil: give the footing under "
-        "`structures:` (shape: {type: footing, width, height, position}; contact: {tangential: "
-        "rough} for a rough base) and drive it in the phase's `structures:`, e.g. footing: "
-        "{displacement: [0, \"-0.1*t\"], rotation: 0} (docs/user-guide.md, structures)");
+        "`structures:` (- name: footing, shape: {type: footing, width, height, position}, a "
+        "density, contact: {tangential: rough} for a rough base) and drive it in the phase's "
+        "`structures:`, e.g. footing: {displacement: [0, \"-0.1*t\"], rotation: 0} "
+        "(docs/user-guide.md, structures)");
   if (auto loads = section.find_non_empty("loads"))
     for (const yaml::Node& item : loads->items()) {
       spec::PointSetLoad load = read_load(item, context);

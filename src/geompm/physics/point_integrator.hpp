@@ -8,7 +8,7 @@
 // scattered in point order, which again does not depend on the thread count. Both loops call the
 // same point kernel (physics/point_kernel.hpp); the cell loop has the cell's node count at compile
 // time (fixed-size matrices), a wide stencil its size at run time. Cell terms (the empty-cell
-// stiffness) and point terms (a prescribed motion's springs, a footing's contact) are assembled
+// stiffness) and point terms (a prescribed motion's springs) are assembled
 // with the points, into the same local vector and matrix (physics/local_terms.hpp).
 #pragma once
 
