@@ -99,7 +99,6 @@ class LagrangianProblem final : public NonlinearProblem {
 
   /// Contributions with a switch outside the material (contact) hold the branch the accepted
   /// iterate took.
-  void iterate_accepted() override { system_.iterate_accepted(); }
 
   /// The points whose update returned them plastically at the last evaluation, and how many
   /// changed between elastic and plastic since the last call (newton.csv). A switching point
@@ -352,7 +351,6 @@ void StepSolver::set_up(PhaseContext& phase, double t0, double dt, Step& step) {
     SystemForces at_start;
     if (system_->evaluate(Vector::Zero(system_->dofs().size()), at_start, false))
       system_->find<Inertia>()->start_in_balance(at_start);
-    system_->restart();
   }
 }
 
@@ -414,7 +412,6 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepRes
   result.newton = solve_newton(problem, solver_, first, x, tangent);
   if (extrapolated && !result.newton.converged) {
     x.setZero();
-    system_->restart();
     solver_.analyse(tangent, hints);
     NewtonResult from_zero = solve_newton(problem, solver_, settings, x, tangent);
     result.newton = after_attempt(result.newton, std::move(from_zero));

@@ -53,10 +53,6 @@ class Contribution {
   /// `tangent`, its stiffness d(f_int + M a - f_ext)/d du at the free unknowns. False: `du` is
   /// inadmissible for it (a veto; Newton backtracks or the step is cut back).
   virtual bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) = 0;
-  /// Newton accepted the iterate of the last add() and goes on from it.
-  virtual void iterate_accepted() {}
-  /// Newton solves the step again from another start.
-  virtual void restart() {}
   /// At the converged increment: the forces it exerts, for histories.
   virtual void report(const Vector& /*du*/, Reactions& /*reactions*/) {}
   /// The step is accepted: keep what the next step needs.

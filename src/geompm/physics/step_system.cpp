@@ -26,14 +26,6 @@ bool StepSystem::evaluate(const Vector& du, SystemForces& forces, bool with_tang
   return true;
 }
 
-void StepSystem::iterate_accepted() {
-  for (const auto& c : contributions_) c->iterate_accepted();
-}
-
-void StepSystem::restart() {
-  for (const auto& c : contributions_) c->restart();
-}
-
 void StepSystem::report(const Vector& du, Reactions& reactions) {
   for (const auto& c : contributions_) c->report(du, reactions);
 }

@@ -47,8 +47,6 @@ class StepSystem {
   /// The tangent's storage (its pattern is the step's).
   SparseMatrix& tangent() { return tangent_; }
 
-  void iterate_accepted();
-  void restart();
   void report(const Vector& du, Reactions& reactions);
   void commit();
 

@@ -85,7 +85,6 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
     result.largest.push_back(problem.largest_residual_unknown());
     result.active.push_back(problem.active_set());
     if (k == 0) result.active.back().changed = -1;  // against another solve's iterate
-    problem.iterate_accepted();
     const Verdict verdict =
         convergence.judge(result.residuals, norm, last_correction, current_correction);
     if (verdict.kind != Verdict::GoOn) {

@@ -43,10 +43,6 @@ class NonlinearProblem {
   /// (-1 if the problem does not say; Newton sets -1 at a solve's first iterate). Called once
   /// per iterate that Newton logs.
   virtual ActiveSet active_set() { return {}; }
-  /// Called once per iterate Newton accepts (after its evaluation, before the correction from
-  /// it): a problem with a switch in its residual may hold the branch the iterate took for the
-  /// rest of the solve, without changing the residual at the iterate itself.
-  virtual void iterate_accepted() {}
 };
 
 }  // namespace geompm
