@@ -407,8 +407,8 @@ TEST_F(CliErrors, GimpNeedsARectilinearGrid) {
 }
 
 TEST_F(CliErrors, MaterialPointsNeedLinearCells) {
-  // Tri6's negative corner shape functions give nodes negative mass: a body on a tri6 mesh is
-  // refused at the mesh, before any step runs.
+  // Tri6's negative corner shape functions give nodes negative mass: a body seeding points in a
+  // tri6 cell (an MPM cell) is refused when the model is built, before any step runs.
   ModelParts parts;
   parts.mesh =
       "mesh:\n  generate: {cell: tri6, origin: [0, 0], x: [{length: 2, cells: 2}], "
@@ -418,7 +418,7 @@ TEST_F(CliErrors, MaterialPointsNeedLinearCells) {
   write("model.yaml", model);
   const std::string err = expect_input_error();
   EXPECT_TRUE(Contains(err, "material points need linear cells")) << err;
-  EXPECT_TRUE(Contains(err, "the mesh has tri6 cells")) << err;
+  EXPECT_TRUE(Contains(err, "tri6 cell 0")) << err;
 }
 
 TEST_F(CliErrors, HistoryOnABoundaryTheMeshLacks) {

@@ -11,7 +11,7 @@ namespace geompm {
 
 Vec3 cell_centroid(const Mesh& mesh, Index c) {
   const auto nodes = mesh.cell_nodes(c);
-  const int corners = dispatch_cell_type(mesh.cell_type, [](auto e) {
+  const int corners = dispatch_cell_type(mesh.type_of(c), [](auto e) {
     return decltype(e)::dim == 2 ? (decltype(e)::nodes == 6 ? 3 : decltype(e)::nodes)
                                  : decltype(e)::nodes;
   });

@@ -103,6 +103,33 @@ Index body_material_at(const spec::Model& spec, const spec::Body& body, double e
 
 namespace {
 
+// The generator's cell type per rectangle from the regions that give one (regions' `cell`): the
+// last region holding the rectangle's centre; the generator's own type elsewhere.
+StructuredMeshSpec with_region_cell_types(const spec::Model& spec) {
+  StructuredMeshSpec generate = *spec.mesh.generate;
+  std::vector<std::pair<RegionTest, CellType>> typed;
+  const Mesh no_mesh;
+  for (const spec::MeshRegion& region : spec.regions) {
+    if (!region.cell) continue;
+    if (region.region.kind == spec::Region::Kind::Group)
+      throw InputError(region.cell_source,
+                       fmt::format("region '{}' gives a cell type but is a group of cells; a "
+                                   "generated mesh is typed by shapes (box, polygon, circle)",
+                                   region.name));
+    typed.emplace_back(RegionTest(region.region, no_mesh, cell_dimension(generate.cell_type)),
+                       *region.cell);
+  }
+  if (typed.empty()) return generate;
+  const CellType base = generate.cell_type;
+  generate.cell_type_at = [typed, base](const Vec3& centre) {
+    CellType type = base;
+    for (const auto& [test, cell] : typed)
+      if (test.contains(centre, -1)) type = cell;
+    return type;
+  };
+  return generate;
+}
+
 Mesh make_mesh(const spec::Model& spec) {
   const int dim = spatial_dimension(spec.kinematics);
   SourceLocation mesh_file = spec.mesh.source;  // errors in an imported file name the model too
@@ -110,7 +137,7 @@ Mesh make_mesh(const spec::Model& spec) {
   Mesh mesh;
   if (spec.mesh.generate) {
     try {
-      mesh = generate_structured_mesh(*spec.mesh.generate);
+      mesh = generate_structured_mesh(with_region_cell_types(spec));
     } catch (const std::invalid_argument& e) {
       throw InputError(spec.mesh.source, e.what());
     }
@@ -124,7 +151,7 @@ Mesh make_mesh(const spec::Model& spec) {
   if (mesh.dim() != dim)
     throw InputError(spec.mesh.source,
                      fmt::format("the mesh is {}D ({} cells) but the analysis is {}", mesh.dim(),
-                                 to_string(mesh.cell_type), to_string(spec.kinematics)));
+                                 cell_type_names(mesh), to_string(spec.kinematics)));
   try {
     validate_mesh(mesh, spec.mesh.file.empty() ? "generated mesh" : spec.mesh.file);
   } catch (const InputError& e) {
@@ -185,18 +212,17 @@ void check_numerics_fit_mesh(const spec::Model& spec, const Mesh& mesh) {
                                    "built-in generator makes), but {}; use standard or ddmp",
                                    why));
   }
-}
-
-// Tri6's corner shape functions are negative over part of the cell: a point there gives its
-// corner nodes negative mass and load. Measured: 2.3 times the settlement once the points cross
-// cells, DDMP stops, a K0 state 19 % out of balance on the N_gamma footing. Material points
-// need linear cells; tri6 stays for finite-element structures, integrated at Gauss points.
-void check_cells_carry_points(const spec::Model& spec, const Mesh& mesh) {
-  if (mesh.cell_type == CellType::Tri6 && !spec.bodies.empty())
+  if (!mesh.mixed()) return;
+  // What reads the cells as one type: the wide stencils and the ghost penalty's faces.
+  if (spec.numerics.interpolation != spec::Interpolation::Standard)
+    throw InputError(spec.numerics.interpolation_source,
+                     "ddmp and gimp need a mesh of one cell type, but the mesh mixes cell types; "
+                     "use interpolation: standard");
+  if (spec.numerics.ghost_penalty > 0.0)
     throw InputError(spec.mesh.source,
-                     "material points need linear cells (tri3, quad4; tet4, hex8), but the mesh "
-                     "has tri6 cells, whose negative corner shape functions give nodes negative "
-                     "mass; use tri3 or quad4 (tri6 serves structures' meshes)");
+                     "numerics.ghost_penalty needs a mesh of one cell type (its faces between a "
+                     "triangle and a quadrilateral are not penalised), but the mesh mixes cell "
+                     "types; set ghost_penalty: 0 or use one cell type");
 }
 
 void create_materials(const spec::Model& spec, Model& model) {
@@ -243,6 +269,21 @@ void check_body_inside_mesh(const spec::Body& body, const RegionTest& region,
                         "[{}, {}] in {} but the mesh spans [{}, {}]",
                         body.name, box->first(d), box->second(d), "xyz"[d], lo(d), hi(d)));
   }
+}
+
+// Tri6's corner shape functions are negative over part of the cell: a point there gives its
+// corner nodes negative mass and load. Measured: 2.3 times the settlement once the points cross
+// cells, DDMP stops, a K0 state 19 % out of balance on the N_gamma footing. Material points
+// need linear cells; tri6 serves FEM regions and structures, integrated at Gauss points.
+void check_cell_carries_points(const spec::Body& body, const Mesh& mesh, Index c) {
+  if (mesh.type_of(c) != CellType::Tri6) return;
+  throw InputError(body.region.source,
+                   fmt::format("body '{}' would put material points in tri6 cell {} (an MPM "
+                               "cell), but material points need linear cells (tri3, quad4; tet4, "
+                               "hex8): tri6 corner shape functions give nodes negative mass; make "
+                               "the body's tri6 cells an FEM region (regions: {{kind: fem}}) or "
+                               "use tri3 or quad4",
+                               body.name, c));
 }
 
 // One material point of body b at a seeding position of cell c: its material (by its layer),
@@ -299,6 +340,7 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
     }
     for (const auto& s : seeds) {
       if (!regions[b].contains(s.position, c)) continue;
+      check_cell_carries_points(body, mesh, c);
       // A structure that starts inside the soil takes the soil's place (docs/theory.md §17.1).
       if (std::any_of(structures.begin(), structures.end(),
                       [&](const PointLocator& inside) { return inside.locate(s.position); })) {
@@ -454,7 +496,6 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   const Mesh& mesh = model->mesh;
   model->topology = build_mesh_topology(mesh);
   check_numerics_fit_mesh(spec, mesh);
-  check_cells_carry_points(spec, mesh);
   model->locator = std::make_unique<PointLocator>(mesh);
   create_materials(spec, *model);
   // The structures before the FEM region: its cells may be given by their distance from one.
@@ -506,7 +547,7 @@ std::string describe_model(const Model& model) {
   out += fmt::format("model      {}{}\n", spec.file, spec.title.empty() ? "" : " — " + spec.title);
   out += fmt::format("analysis   {}\n", to_string(spec.kinematics));
   out += fmt::format("mesh       {} {} cells, {} nodes{}\n", model.mesh.num_cells(),
-                     to_string(model.mesh.cell_type), model.mesh.num_nodes(),
+                     cell_type_names(model.mesh), model.mesh.num_nodes(),
                      spec.mesh.file.empty() ? " (generated)" : " from " + spec.mesh.file);
   double mass = 0.0, volume = 0.0;
   for (Index p = 0; p < model.points.size(); ++p) {

@@ -45,7 +45,11 @@ ModelSize estimate_model_size(const spec::Model& spec) {
     boxes *= along;
     grid_nodes *= along + 1;
   }
-  size.cells = boxes * cells_per_box(mesh.cell_type, mesh.diagonals);
+  // Regions of another cell type (tri3 in a quad4 mesh) split their rectangles in two.
+  const bool typed_regions = std::any_of(spec.regions.begin(), spec.regions.end(),
+                                         [](const spec::MeshRegion& r) { return r.cell; });
+  size.cells =
+      boxes * std::max(cells_per_box(mesh.cell_type, mesh.diagonals), typed_regions ? 2.0 : 1.0);
   size.nodes = grid_nodes + (mesh.diagonals == Diagonals::Crossed ? boxes : 0) +
                (mesh.cell_type == CellType::Tri6 ? 2 * grid_nodes : 0);
   int most_points = 0;

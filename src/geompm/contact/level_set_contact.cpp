@@ -14,9 +14,9 @@ namespace geompm {
 
 namespace {
 
-// The shape values of mesh cell c at its reference coordinates xi (nodes_per_cell entries).
-void cell_shape(const Mesh& mesh, const Vec3& xi, double* N) {
-  dispatch_cell_type(mesh.cell_type, [&](auto e) {
+// The shape values of mesh cell c at its reference coordinates xi (its nodes' entries).
+void cell_shape(const Mesh& mesh, Index c, const Vec3& xi, double* N) {
+  dispatch_cell_type(mesh.type_of(c), [&](auto e) {
     using E = decltype(e);
     const auto values = E::shape(xi.template head<E::dim>());
     for (int a = 0; a < E::nodes; ++a) N[a] = values(a);
@@ -260,7 +260,7 @@ bool LevelSetContact::build_kinematics(const std::vector<Index>& pieces, Kinemat
         return std::array<double, 3>{w * segment.normal.dot(c), w * segment.tangents[0].dot(c),
                                      w * segment.tangents[1].dot(c)};
       };
-      cell_shape(mesh, soil_side->xi, N);
+      cell_shape(mesh, soil_side->cell, soil_side->xi, N);
       if (pair_.law.alpha > 0.0) k.strength += w * cell_strength(soil_side->cell);
       for (std::size_t a = 0; a < nodes.size(); ++a)
         for (int i = 0; i < dim_; ++i)

@@ -9,11 +9,13 @@ FemRegion::FemRegion(const Mesh& mesh, const std::vector<CellKind>& kinds)
       fem_cell_(mesh.num_cells(), 0),
       fem_node_(mesh.num_nodes(), 0),
       initial_nodes_(mesh.nodes) {
-  points_per_cell_ =
-      dispatch_cell_type(mesh.cell_type, [](auto e) { return decltype(e)::quadrature_size(); });
+  gauss_start_.assign(1, 0);
   for (Index c = 0; c < mesh.num_cells(); ++c)
     if (kinds[c] == CellKind::Fem) {
       cells_.push_back(c);
+      gauss_start_.push_back(gauss_start_.back() + dispatch_cell_type(mesh.type_of(c), [](auto e) {
+                               return static_cast<Index>(decltype(e)::quadrature_size());
+                             }));
       fem_cell_[c] = 1;
       for (Index a : mesh.cell_nodes(c)) fem_node_[a] = 1;
     }

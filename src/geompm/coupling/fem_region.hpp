@@ -28,10 +28,12 @@ class FemRegion {
   const std::vector<char>& fem_node() const { return fem_node_; }
   /// Per mesh cell, its kind.
   const std::vector<CellKind>& kinds() const { return kinds_; }
-  /// Gauss points per cell (the cell type's rule).
-  int points_per_cell() const { return points_per_cell_; }
-  /// The Gauss points: entry k * points_per_cell() + q is Gauss point q of cells()[k]; `cell`
-  /// is the mesh cell and `local` the quadrature point's reference coordinates, fixed.
+  /// The Gauss points of region cell k (cells()[k], its type's rule) are entries
+  /// [gauss_begin(k), gauss_begin(k + 1)) of gauss_points(), in the rule's order; of a uniform
+  /// mesh k * the rule's size.
+  Index gauss_begin(std::size_t k) const { return gauss_start_[k]; }
+  /// The Gauss points: `cell` is the mesh cell and `local` the quadrature point's reference
+  /// coordinates, fixed.
   MaterialPoints& gauss_points() { return gauss_; }
   const MaterialPoints& gauss_points() const { return gauss_; }
   /// The mesh's node positions at the start of the analysis.
@@ -49,7 +51,7 @@ class FemRegion {
   std::vector<CellKind> kinds_;
   std::vector<Index> cells_;
   std::vector<char> fem_cell_, fem_node_;
-  int points_per_cell_ = 0;
+  std::vector<Index> gauss_start_;  // per region cell, and one past the last
   MaterialPoints gauss_;
   std::vector<Vec3> initial_nodes_;
 };

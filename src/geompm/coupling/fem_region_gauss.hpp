@@ -10,7 +10,7 @@ namespace geompm {
 
 template <class F>
 void for_each_gauss_point(const Mesh& mesh, Index c, bool axisymmetric, F&& f) {
-  dispatch_cell_type(mesh.cell_type, [&](auto element) {
+  dispatch_cell_type(mesh.type_of(c), [&](auto element) {
     using E = decltype(element);
     constexpr CellType T = cell_type_of<E>;
     const NodeCoordinates<T> nodes = cell_node_coordinates<T>(mesh, c);

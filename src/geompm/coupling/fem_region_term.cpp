@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geompm/dofs/sparsity.hpp"
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/gauss_cell.hpp"
 
@@ -17,19 +18,21 @@ FemRegionTerm::FemRegionTerm(FemRegion& region, const GridSystem& grid, const Do
   const int dim = grid.dim();
   const int field = dofs.find("displacement");
   const MaterialPoints& gauss = region.gauss_points();
-  const int nq = region.points_per_cell();
-  cell_size_ = mesh.nodes_per_cell() * dim;
+  cell_start_.assign(1, 0);
+  slot_start_.assign(1, 0);
   for (std::size_t k = 0; k < region.cells().size(); ++k) {
     const Index c = region.cells()[k];
     const auto nodes = mesh.cell_nodes(c);
+    const std::size_t size = nodes.size() * dim;  // a mixed mesh's cells differ
+    cell_start_.push_back(cell_start_.back() + size);
+    slot_start_.push_back(slot_start_.back() + size * size);
     for (Index a : nodes) {
       const Index active = grid.node_to_active()[a];
       if (active < 0) throw std::logic_error("fem region: a node of an FEM cell is not active");
       for (int i = 0; i < dim; ++i) cell_dofs_.push_back(dofs.dof(field, active, i));
       for (int i = 0; i < dim; ++i) X_.push_back(mesh.nodes[a](i));
     }
-    const Index first = static_cast<Index>(k) * nq;
-    averaged_.push_back(grid.settings().volume_average[gauss.material[first]]);
+    averaged_.push_back(grid.settings().volume_average[gauss.material[region.gauss_begin(k)]]);
   }
   // The region's cells by the grid's colours (no two cells of a colour share a node).
   std::vector<Index> of_cell(mesh.num_cells(), -1);
@@ -42,51 +45,52 @@ FemRegionTerm::FemRegionTerm(FemRegion& region, const GridSystem& grid, const Do
   }
   // Self-weight f_a = sum_q m_q N_a(xi_q) g (eq. 19.4): the Gauss points' masses are constant.
   applied_ = Vector::Zero(static_cast<Index>(cell_dofs_.size()));
-  dispatch_cell_type(mesh.cell_type, [&](auto element) {
-    using E = decltype(element);
-    for (std::size_t k = 0; k < region.cells().size(); ++k) {
-      double* cell = applied_.data() + k * cell_size_;
-      for (int q = 0; q < nq; ++q) {
-        const Index g = static_cast<Index>(k) * nq + q;
-        const typename E::Values N = E::shape(gauss.local[g].template head<E::dim>());
-        for (int a = 0; a < E::nodes; ++a)
-          for (int i = 0; i < dim; ++i) cell[a * dim + i] += gauss.mass[g] * N(a) * gravity(i);
-      }
-    }
-  });
+  for_each_cell_typed(
+      mesh, static_cast<Index>(region.cells().size()), [&](Index k) { return region.cells()[k]; },
+      [&](auto element, Index k) {
+        using E = decltype(element);
+        double* cell = applied_.data() + cell_start_[k];
+        for (Index g = region.gauss_begin(k); g < region.gauss_begin(k + 1); ++g) {
+          const typename E::Values N = E::shape(gauss.local[g].template head<E::dim>());
+          for (int a = 0; a < E::nodes; ++a)
+            for (int i = 0; i < dim; ++i) cell[a * dim + i] += gauss.mass[g] * N(a) * gravity(i);
+        }
+      });
 }
 
 void FemRegionTerm::declare_couplings(SparsityBuilder& pattern) const {
-  std::vector<Index> block(cell_size_);
-  for (std::size_t c = 0; c * cell_size_ < cell_dofs_.size(); ++c) {
-    std::copy_n(cell_dofs_.begin() + c * cell_size_, cell_size_, block.begin());
+  std::vector<Index> block;
+  for (std::size_t k = 0; k + 1 < cell_start_.size(); ++k) {
+    block.assign(cell_dofs_.begin() + cell_start_[k], cell_dofs_.begin() + cell_start_[k + 1]);
     pattern.couple_unknowns(block);
   }
 }
 
 void FemRegionTerm::attach(const SparseMatrix& pattern) {
-  const std::size_t n = cell_size_, cells = region_.cells().size();
-  slots_.resize(cells * n * n);
+  const std::size_t cells = region_.cells().size();
+  slots_.resize(slot_start_.back());
   for (std::size_t k = 0; k < cells; ++k)
-    block_slots(pattern, dofs_, std::span<const Index>(cell_dofs_.data() + k * n, n),
-                slots_.data() + k * n * n);
+    block_slots(pattern, dofs_,
+                std::span<const Index>(cell_dofs_.data() + cell_start_[k],
+                                       cell_start_[k + 1] - cell_start_[k]),
+                slots_.data() + slot_start_[k]);
 }
 
 bool FemRegionTerm::add_cells(const Vector& du, SystemForces* forces, SparseMatrix* tangent,
                               bool commit) {
   // One colour at a time, its cells (which share no node) on all threads: every entry of the
   // force and the tangent is summed in the same order whatever the number of threads.
-  return dispatch_cell_type(grid_.mesh().cell_type, [&](auto element) {
-    using E = decltype(element);
-    std::atomic<bool> admissible{true};
-    for (const std::vector<Index>& colour : colours_) {
-      const Index count = static_cast<Index>(colour.size());
-#pragma omp parallel for schedule(dynamic, 8) if (count > 64)
-      for (Index j = 0; j < count; ++j)
-        if (!add_cell<E>(colour[j], du, forces, tangent, commit)) admissible = false;
-    }
-    return admissible.load();
-  });
+  std::atomic<bool> admissible{true};
+  for (const std::vector<Index>& colour : colours_)
+    for_each_cell_typed(
+        grid_.mesh(), static_cast<Index>(colour.size()),
+        [&](Index j) { return region_.cells()[colour[j]]; },
+        [&](auto element, Index j) {
+          if (!add_cell<decltype(element)>(colour[j], du, forces, tangent, commit))
+            admissible = false;
+        },
+        colour.size() > 64);
+  return admissible.load();
 }
 
 template <class E>
@@ -94,17 +98,16 @@ bool FemRegionTerm::add_cell(Index k, const Vector& du, SystemForces* forces, Sp
                              bool commit) {
   constexpr int n = E::nodes * E::dim;
   MaterialPoints& gauss = region_.gauss_points();
-  const int nq = region_.points_per_cell();
   Eigen::Matrix<double, E::nodes, E::dim> X, u;
   PointKernelResult<E> cell;
-  const Index* dofs = cell_dofs_.data() + k * n;
-  const double* x = X_.data() + k * n;
+  const Index* dofs = cell_dofs_.data() + cell_start_[k];
+  const double* x = X_.data() + cell_start_[k];
   for (int a = 0; a < E::nodes; ++a)
     for (int i = 0; i < E::dim; ++i) {
       X(a, i) = x[a * E::dim + i];
       u(a, i) = du(dofs[a * E::dim + i]);
     }
-  const Index first = k * nq;
+  const Index first = region_.gauss_begin(k);
   const auto start_of = [&](int q) {
     const Index g = first + q;
     return PointStartState{
@@ -130,7 +133,7 @@ bool FemRegionTerm::add_cell(Index k, const Vector& du, SystemForces* forces, Sp
                                start_of, cell, on_state))
     return false;
   scatter_cell<E>(cell, dofs, dofs_, forces ? &forces->internal : nullptr, tangent,
-                  slots_.empty() ? nullptr : slots_.data() + k * n * n);
+                  slots_.empty() ? nullptr : slots_.data() + slot_start_[k]);
   return true;
 }
 

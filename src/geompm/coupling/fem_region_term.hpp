@@ -43,11 +43,14 @@ class FemRegionTerm final : public Contribution {
   FemRegion& region_;
   const GridSystem& grid_;
   const DofMap& dofs_;
-  int cell_size_ = 0;             // unknowns per cell
+  // Per FEM cell k, entries [cell_start_[k], cell_start_[k + 1]) of cell_dofs_, X_ and applied_
+  // (its nodes' unknowns; a mixed mesh's cells have different counts), and from slot_start_[k]
+  // its square of slots_.
+  std::vector<std::size_t> cell_start_, slot_start_;
   std::vector<Index> cell_dofs_;  // per FEM cell: its nodes' displacement unknowns, node-major
   std::vector<double> X_;         // per FEM cell: its nodes' positions at the step's start
   std::vector<char> averaged_;    // per FEM cell: its material takes the cell's volume average
-  std::vector<int> slots_;        // per FEM cell: cell_size_^2 slots in the tangent's values
+  std::vector<int> slots_;        // per FEM cell: its unknowns^2 slots in the tangent's values
   std::vector<std::vector<Index>> colours_;  // the region's cells (k) by the grid's colours
   Vector applied_;                           // self-weight per entry of cell_dofs_
   Vector converged_;

@@ -29,9 +29,9 @@ std::vector<std::vector<int>> corner_polygons(CellType type) {
 
 MeshQuality mesh_quality(const Mesh& mesh, const std::vector<char>& which) {
   MeshQuality quality;
-  const auto polygons = corner_polygons(mesh.cell_type);
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     if (!which.empty() && !which[c]) continue;
+    const auto polygons = corner_polygons(mesh.type_of(c));
     const auto nodes = mesh.cell_nodes(c);
     double shortest = std::numeric_limits<double>::max(), longest = 0.0;
     for (const auto& polygon : polygons) {

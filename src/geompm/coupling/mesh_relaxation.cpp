@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 
@@ -53,11 +54,12 @@ Eigen::Matrix<double, E::nodes, E::nodes> laplacian(const Mesh& mesh, Index c) {
 }  // namespace
 
 std::vector<char> boundary_nodes(const Mesh& mesh) {
-  const FacetTable table = facets_of(mesh.cell_type);
+  // A facet is keyed by its sorted corners, so a quad4's edge and a tri3's edge between the same
+  // nodes are one facet (a mixed mesh's interface).
   std::map<std::vector<Index>, int> count;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const auto nodes = mesh.cell_nodes(c);
-    for (const auto& facet : table.corners) {
+    for (const auto& facet : facets_of(mesh.type_of(c)).corners) {
       std::vector<Index> key;
       for (int a : facet) key.push_back(nodes[a]);
       std::sort(key.begin(), key.end());
@@ -67,6 +69,7 @@ std::vector<char> boundary_nodes(const Mesh& mesh) {
   std::vector<char> boundary(mesh.num_nodes(), 0);
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const auto nodes = mesh.cell_nodes(c);
+    const FacetTable table = facets_of(mesh.type_of(c));
     for (std::size_t f = 0; f < table.corners.size(); ++f) {
       std::vector<Index> key;
       for (int a : table.corners[f]) key.push_back(nodes[a]);
@@ -95,23 +98,21 @@ MeshRelaxation::MeshRelaxation(const Mesh& current, const FemRegion& region)
       }
   }
   std::vector<Eigen::Triplet<double>> ff, fh;
-  dispatch_cell_type(mesh.cell_type, [&](auto element) {
+  for_each_mesh_cell_typed(mesh, [&](auto element, Index c) {
     using E = decltype(element);
-    for (Index c = 0; c < mesh.num_cells(); ++c) {
-      if (region.fem_cell()[c]) continue;
-      const auto nodes = mesh.cell_nodes(c);
-      const auto K = laplacian<E>(mesh, c);
-      for (int a = 0; a < E::nodes; ++a) {
-        const Index fa = free_of_[nodes[a]];
-        if (fa < 0) continue;
-        for (int b = 0; b < E::nodes; ++b) {
-          const Index fb = free_of_[nodes[b]];
-          if (fb >= 0) {
-            ff.emplace_back(fa, fb, K(a, b));
-          } else if (region.fem_node()[nodes[b]]) {
-            fh.emplace_back(fa, nodes[b], K(a, b));
-            fem_coupled_[nodes[b]] = 1;
-          }
+    if (region.fem_cell()[c]) return;
+    const auto nodes = mesh.cell_nodes(c);
+    const auto K = laplacian<E>(mesh, c);
+    for (int a = 0; a < E::nodes; ++a) {
+      const Index fa = free_of_[nodes[a]];
+      if (fa < 0) continue;
+      for (int b = 0; b < E::nodes; ++b) {
+        const Index fb = free_of_[nodes[b]];
+        if (fb >= 0) {
+          ff.emplace_back(fa, fb, K(a, b));
+        } else if (region.fem_node()[nodes[b]]) {
+          fh.emplace_back(fa, nodes[b], K(a, b));
+          fem_coupled_[nodes[b]] = 1;
         }
       }
     }

@@ -1,6 +1,7 @@
 #include "geompm/interpolation/dual_domain.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "geompm/mesh/element.hpp"
 
@@ -106,6 +107,9 @@ void build(const MaterialPoints& points, const StencilInputs& in, WideStencils& 
 
 void DualDomainInterpolation::after_activation(const MaterialPoints& points,
                                                const StencilInputs& in, WideStencils& out) const {
+  // The smoothed gradients are built per cell type (the model refuses ddmp on a mixed mesh).
+  if (in.mesh.mixed())
+    throw std::invalid_argument("ddmp: needs a mesh of one cell type; use standard interpolation");
   dispatch_cell_type(in.mesh.cell_type, [&](auto e) { build<decltype(e)>(points, in, out); });
 }
 

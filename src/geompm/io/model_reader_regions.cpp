@@ -26,7 +26,7 @@ std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context
   std::vector<spec::MeshRegion> regions;
   for (const auto& [name, region_node] : node.entries()) {
     if (name.empty()) region_node.fail("a region needs a name");
-    const yaml::Map entry = region_node.map({"kind", "region", "within", "beyond"});
+    const yaml::Map entry = region_node.map({"kind", "region", "within", "beyond", "cell"});
     spec::MeshRegion region;
     region.name = name;
     region.source = region_node.where();
@@ -39,6 +39,29 @@ std::vector<spec::MeshRegion> read_regions(const yaml::Node& node, const Context
     if (within || beyond) {
       region.near = read_near(within ? *within : *beyond);
       region.near->beyond = beyond.has_value();
+    }
+    if (auto cell = entry.find("cell")) {
+      // Only where both share their corner nodes, so that the mesh stays conforming.
+      const std::string type = cell->choice({"tri3", "quad4"});
+      if (!context.cell_type)
+        cell->fail(
+            "a region's cell type applies to a generated mesh (mesh.generate); an imported mesh's "
+            "cells are Gmsh's: mesh the region with the cells you want there");
+      if (context.dimension != 2 ||
+          (*context.cell_type != CellType::Quad4 && *context.cell_type != CellType::Tri3))
+        cell->fail(
+            fmt::format("a region's cell type mixes quad4 and tri3 cells of a generated "
+                        "2D mesh, but the mesh's cells are {}; generate quad4 or tri3 "
+                        "cells, or remove 'cell'",
+                        to_string(*context.cell_type)));
+      region.cell = *parse_cell_type(type);
+      region.cell_source = cell->where();
+      if (entry.find("within") || entry.find("beyond"))
+        cell->fail(
+            "a region's cell type needs the region as a shape (box, polygon, circle), not "
+            "a distance from a structure: the mesh is generated before the structures");
+      if (!entry.find("region"))
+        cell->fail("a region's cell type needs the region as a shape (region: {box: ...})");
     }
     if (auto given = entry.find("region"))
       region.region = read_region(*given, context);

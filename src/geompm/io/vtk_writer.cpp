@@ -86,6 +86,15 @@ class VtuBuilder {
   /// Cells given as a flat connectivity with `nodes_per_cell` entries each, all of one type.
   void set_cells(const std::vector<Index>& connectivity, int nodes_per_cell,
                  std::uint8_t cell_type) {
+    set_cells(
+        connectivity,
+        [&](std::size_t c) { return (c + 1) * static_cast<std::size_t>(nodes_per_cell); },
+        [&](std::size_t) { return cell_type; });
+  }
+
+  /// Cells of a flat connectivity: cell c ends at end_of(c) and has the VTK type type_of(c).
+  template <class EndOf, class TypeOf>
+  void set_cells(const std::vector<Index>& connectivity, EndOf&& end_of, TypeOf&& type_of) {
     const std::size_t count = num_cells_;
     // Int64 connectivity and offsets: VTK's own choice, and safe beyond 2^31 entries.
     std::size_t offset = data_.begin_block(connectivity.size() * sizeof(std::int64_t));
@@ -94,12 +103,11 @@ class VtuBuilder {
 
     // VTK's offsets are the end of each cell in the connectivity (no leading zero).
     offset = data_.begin_block(count * sizeof(std::int64_t));
-    for (std::size_t c = 1; c <= count; ++c)
-      data_.put(static_cast<std::int64_t>(c * static_cast<std::size_t>(nodes_per_cell)));
+    for (std::size_t c = 0; c < count; ++c) data_.put(static_cast<std::int64_t>(end_of(c)));
     cells_xml_ += data_array_tag("Int64", "offsets", 1, offset);
 
     offset = data_.begin_block(count * sizeof(std::uint8_t));
-    for (std::size_t c = 0; c < count; ++c) data_.put(cell_type);
+    for (std::size_t c = 0; c < count; ++c) data_.put(type_of(c));
     cells_xml_ += data_array_tag("UInt8", "types", 1, offset);
   }
 
@@ -225,7 +233,7 @@ void write_vtu_mesh(const std::filesystem::path& file, const Mesh& mesh,
                     const std::vector<Vec3>& nodes, const FieldSet& node_fields,
                     const FieldSet& cell_fields) {
   const int per_cell = mesh.nodes_per_cell();
-  if (mesh.connectivity.size() % static_cast<std::size_t>(per_cell) != 0)
+  if (!mesh.mixed() && mesh.connectivity.size() % static_cast<std::size_t>(per_cell) != 0)
     throw std::invalid_argument(fmt::format(
         "write_vtu_mesh: {} connectivity entries are not a whole number of {} cells ({} nodes)",
         mesh.connectivity.size(), to_string(mesh.cell_type), per_cell));
@@ -238,7 +246,15 @@ void write_vtu_mesh(const std::filesystem::path& file, const Mesh& mesh,
 
   VtuBuilder vtu(nodes.size(), static_cast<std::size_t>(mesh.num_cells()));
   vtu.set_points(nodes);
-  vtu.set_cells(mesh.connectivity, per_cell, vtk_cell_type(mesh.cell_type));
+  // Each cell its own VTK type and end: a mixed mesh is written as it is.
+  vtu.set_cells(
+      mesh.connectivity,
+      [&](std::size_t c) {
+        return static_cast<std::size_t>(mesh.cell_nodes(static_cast<Index>(c)).data() -
+                                        mesh.connectivity.data()) +
+               mesh.cell_nodes(static_cast<Index>(c)).size();
+      },
+      [&](std::size_t c) { return vtk_cell_type(mesh.type_of(static_cast<Index>(c))); });
   vtu.set_point_data(node_fields, "node");
   vtu.set_cell_data(cell_fields);
   write_file_atomically(file, vtu.str());

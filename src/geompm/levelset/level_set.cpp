@@ -1,5 +1,6 @@
 #include "geompm/levelset/level_set.hpp"
 
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 
@@ -12,9 +13,7 @@ namespace {
 /// integral over the FEM cells around the node is added to `filled`: an FEM cell is soil
 /// throughout (docs/theory.md §19), though it holds no material points, so the nodes an FEM region
 /// shares with the MPM region are inside the soil, not on a boundary between them.
-template <class E>
 std::vector<double> support_measure(const GridSystem& grid, std::vector<double>& filled) {
-  constexpr CellType T = cell_type_of<E>;
   const Mesh& mesh = grid.mesh();
   const auto& active = grid.active_nodes();
   const auto& node_to_active = grid.node_to_active();
@@ -22,8 +21,10 @@ std::vector<double> support_measure(const GridSystem& grid, std::vector<double>&
   for (Index node : active)
     for (Index c : grid.topology().node_cells.row(node)) around[c] = 1;
   std::vector<double> measure(active.size(), 0.0);
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (!around[c]) continue;
+  for_each_mesh_cell_typed(mesh, [&](auto e, Index c) {
+    using E = decltype(e);
+    constexpr CellType T = cell_type_of<E>;
+    if (!around[c]) return;
     const NodeCoordinates<T> X = cell_node_coordinates<T>(mesh, c);
     const auto nodes = mesh.cell_nodes(c);
     for (int q = 0; q < E::quadrature_size(); ++q) {
@@ -37,7 +38,7 @@ std::vector<double> support_measure(const GridSystem& grid, std::vector<double>&
         if (grid.fem_cell(c)) filled[node] += w * N(a);
       }
     }
-  }
+  });
   return measure;
 }
 
@@ -58,8 +59,7 @@ LevelSet::LevelSet(const GridSystem& grid, const MaterialPoints& points, std::ve
     const double V = points.volume[p] * per;
     grid.for_each_weight(points, p, [&](Index node, double N) { filled[node] += N * V; });
   }
-  const std::vector<double> support = dispatch_cell_type(
-      grid.mesh().cell_type, [&](auto e) { return support_measure<decltype(e)>(grid, filled); });
+  const std::vector<double> support = support_measure(grid, filled);
   phi_.assign(n_nodes, outside);
   for (std::size_t a = 0; a < n_nodes; ++a)
     if (support[a] > 0.0) phi_[a] = filled[a] / support[a] - 0.5;
@@ -71,7 +71,7 @@ double LevelSet::node_value(Index node) const {
 }
 
 double LevelSet::value(Index cell, const Vec3& xi) const {
-  return dispatch_cell_type(grid_.mesh().cell_type, [&](auto e) {
+  return dispatch_cell_type(grid_.mesh().type_of(cell), [&](auto e) {
     using E = decltype(e);
     const typename E::Values N = E::shape(xi.head<E::dim>());
     const auto nodes = grid_.mesh().cell_nodes(cell);
@@ -82,7 +82,7 @@ double LevelSet::value(Index cell, const Vec3& xi) const {
 }
 
 Vec3 LevelSet::gradient(Index cell, const Vec3& xi) const {
-  return dispatch_cell_type(grid_.mesh().cell_type, [&](auto e) {
+  return dispatch_cell_type(grid_.mesh().type_of(cell), [&](auto e) {
     using E = decltype(e);
     constexpr CellType T = cell_type_of<E>;
     const typename E::Local local = xi.head<E::dim>();

@@ -43,10 +43,10 @@ SurfaceLoad::SurfaceLoad(const GridSystem& grid, const DofMap& dofs,
     l.points = facet_quadrature(facet, grid.axisymmetric());
     l.N_vertex.resize(facet.vertices, nen);
     for (int k = 0; k < facet.vertices; ++k)
-      l.N_vertex.row(k) = shape_at(mesh.cell_type, facet.xi[k]).transpose();
+      l.N_vertex.row(k) = shape_at(mesh.type_of(facet.cell), facet.xi[k]).transpose();
     l.N_point.resize(Index(l.points.size()), nen);
     for (std::size_t q = 0; q < l.points.size(); ++q) {
-      l.N_point.row(Index(q)) = shape_at(mesh.cell_type, l.points[q].xi).transpose();
+      l.N_point.row(Index(q)) = shape_at(mesh.type_of(facet.cell), l.points[q].xi).transpose();
       l.value.push_back(value(l.points[q].x));
     }
     loaded_.push_back(std::move(l));

@@ -115,7 +115,7 @@ void cut_cell(const Mesh& mesh, Index cell, const std::vector<double>& node_phi,
   bool any_in = false, any_out = false;
   for (Index n : nodes) (node_phi[n] > 0.0 ? any_in : any_out) = true;
   if (!any_in || !any_out) return;
-  dispatch_cell_type(mesh.cell_type, [&](auto e) {
+  dispatch_cell_type(mesh.type_of(cell), [&](auto e) {
     using E = decltype(e);
     const auto vertex = [&](const Vec3& xi, double phi) {
       return Vertex{xi, map_to_physical(mesh, cell, xi), phi};
@@ -259,7 +259,7 @@ void move_facets(std::vector<SurfaceFacet>& facets, const GridSystem& grid, cons
     const auto nodes = mesh.cell_nodes(facet.cell);
     Vertex v[3];
     for (int k = 0; k < facet.vertices; ++k) {
-      const Eigen::VectorXd N = dispatch_cell_type(mesh.cell_type, [&](auto e) {
+      const Eigen::VectorXd N = dispatch_cell_type(mesh.type_of(facet.cell), [&](auto e) {
         using E = decltype(e);
         return Eigen::VectorXd(E::shape(facet.xi[k].head<E::dim>()));
       });

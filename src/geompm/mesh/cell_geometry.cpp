@@ -12,11 +12,11 @@ namespace geompm {
 
 namespace {
 
-/// Runs f.template operator()<T>() for the mesh's cell type, so the bodies below are written
-/// once with compile-time sizes.
+/// Runs f.template operator()<T>() for the type of cell c, so the bodies below are written once
+/// with compile-time sizes.
 template <class F>
-decltype(auto) with_cell_type(const Mesh& mesh, F&& f) {
-  return dispatch_cell_type(mesh.cell_type, [&](auto element) -> decltype(auto) {
+decltype(auto) with_cell_type(const Mesh& mesh, Index c, F&& f) {
+  return dispatch_cell_type(mesh.type_of(c), [&](auto element) -> decltype(auto) {
     return f.template operator()<cell_type_of<decltype(element)>>();
   });
 }
@@ -46,7 +46,7 @@ std::string describe_cell_nodes(const Mesh& mesh, Index c) {
 }  // namespace
 
 Vec3 map_to_physical(const Mesh& mesh, Index c, const Vec3& xi) {
-  return with_cell_type(mesh, [&]<CellType T>() {
+  return with_cell_type(mesh, c, [&]<CellType T>() {
     constexpr int dim = Element<T>::dim;
     Vec3 x = Vec3::Zero();
     x.head<dim>() = map_to_physical<T>(cell_node_coordinates<T>(mesh, c), xi.head<dim>());
@@ -55,7 +55,7 @@ Vec3 map_to_physical(const Mesh& mesh, Index c, const Vec3& xi) {
 }
 
 std::optional<Vec3> map_to_reference(const Mesh& mesh, Index c, const Vec3& x) {
-  return with_cell_type(mesh, [&]<CellType T>() -> std::optional<Vec3> {
+  return with_cell_type(mesh, c, [&]<CellType T>() -> std::optional<Vec3> {
     constexpr int dim = Element<T>::dim;
     const auto xi = map_to_reference<T>(cell_node_coordinates<T>(mesh, c), x.head<dim>());
     if (!xi) return std::nullopt;
@@ -66,7 +66,7 @@ std::optional<Vec3> map_to_reference(const Mesh& mesh, Index c, const Vec3& x) {
 }
 
 bool cell_contains(const Mesh& mesh, Index c, const Vec3& x, Vec3& xi) {
-  return with_cell_type(mesh, [&]<CellType T>() {
+  return with_cell_type(mesh, c, [&]<CellType T>() {
     constexpr int dim = Element<T>::dim;
     typename Element<T>::Local local;
     if (!cell_contains<T>(cell_node_coordinates<T>(mesh, c), x.head<dim>(), local)) return false;
@@ -80,7 +80,7 @@ bool cell_contains(const Mesh& mesh, Index c, const Vec3& x, Vec3& xi) {
 // curved Tri6 and a trilinear Hex8) and, for the radial measure, x det J too (degree 4 for a
 // curved Tri6, biquadratic for Quad4), so no higher-order rule is needed.
 double cell_measure(const Mesh& mesh, Index c, bool radial) {
-  return with_cell_type(mesh, [&]<CellType T>() {
+  return with_cell_type(mesh, c, [&]<CellType T>() {
     const NodeCoordinates<T> nodes = cell_node_coordinates<T>(mesh, c);
     double sum = 0.0;
     for (int q = 0; q < Element<T>::quadrature_size(); ++q) {
@@ -94,7 +94,7 @@ double cell_measure(const Mesh& mesh, Index c, bool radial) {
 }
 
 double cell_min_relative_jacobian(const Mesh& mesh, Index c) {
-  return with_cell_type(mesh, [&]<CellType T>() {
+  return with_cell_type(mesh, c, [&]<CellType T>() {
     const NodeCoordinates<T> nodes = cell_node_coordinates<T>(mesh, c);
     double smallest = std::numeric_limits<double>::infinity();
     double mean = 0.0;  // mean det J = measure / reference measure
@@ -120,7 +120,18 @@ void validate_mesh(const Mesh& mesh, const std::string& source) {
                                         "least one {} cell",
                                         mesh.nodes.size(), mesh.connectivity.size() / per_cell,
                                         to_string(mesh.cell_type)));
-  if (mesh.connectivity.size() % per_cell != 0)
+  if (mesh.mixed() && (mesh.cell_offsets.size() != mesh.cell_types.size() + 1 ||
+                       mesh.cell_offsets.back() != static_cast<Index>(mesh.connectivity.size())))
+    throw InputError(where, fmt::format("the mixed mesh's {} cell offsets do not span its {} "
+                                        "connectivity entries; expected one per cell and one more",
+                                        mesh.cell_offsets.size(), mesh.connectivity.size()));
+  for (CellType t : mesh.types_present())
+    if (cell_dimension(t) != mesh.dim())
+      throw InputError(where, fmt::format("the mesh mixes {}D and {}D cells ({} and {}); expected "
+                                          "cells of one dimension",
+                                          mesh.dim(), cell_dimension(t), to_string(mesh.cell_type),
+                                          to_string(t)));
+  if (!mesh.mixed() && mesh.connectivity.size() % per_cell != 0)
     throw InputError(where,
                      fmt::format("the connectivity has {} entries; expected a multiple "
                                  "of {} ({} nodes per cell)",
@@ -151,7 +162,7 @@ void validate_mesh(const Mesh& mesh, const std::string& source) {
           where, fmt::format("cell {} ({}) is inverted or degenerate: nodes {}; smallest "
                              "det(dx/dxi) relative to its mean is {:.3g}; expected a positive "
                              "Jacobian throughout the cell (nodes in Gmsh order, {})",
-                             c, to_string(mesh.cell_type), describe_cell_nodes(mesh, c), relative,
+                             c, to_string(mesh.type_of(c)), describe_cell_nodes(mesh, c), relative,
                              mesh.dim() == 2 ? "counter-clockwise" : "positively oriented"));
   }
   for (const auto& [name, cells] : mesh.cell_groups)
@@ -169,7 +180,7 @@ void validate_mesh(const Mesh& mesh, const std::string& source) {
 }
 
 std::pair<Vec3, Vec3> cell_bounding_box(const Mesh& mesh, Index c) {
-  return with_cell_type(mesh, [&]<CellType T>() {
+  return with_cell_type(mesh, c, [&]<CellType T>() {
     constexpr int dim = Element<T>::dim;
     const auto [lower, upper] = cell_bounding_box<T>(cell_node_coordinates<T>(mesh, c));
     std::pair<Vec3, Vec3> box{Vec3::Zero(), Vec3::Zero()};

@@ -69,7 +69,7 @@ using Jacobian = Eigen::Matrix<double, Element<T>::dim, Element<T>::dim>;
 template <CellType T>
 NodeCoordinates<T> cell_node_coordinates(const Mesh& mesh, Index c) {
   NodeCoordinates<T> coordinates;
-  const Index* ids = mesh.connectivity.data() + static_cast<std::size_t>(c) * Element<T>::nodes;
+  const Index* ids = mesh.cell_nodes(c).data();
   for (int a = 0; a < Element<T>::nodes; ++a)
     coordinates.col(a) = mesh.nodes[ids[a]].template head<Element<T>::dim>();
   return coordinates;

@@ -58,13 +58,35 @@ struct PhysicalGroup {
   std::vector<std::size_t> node_tags;     // dim < mesh dimension: the boundary's nodes
 };
 
-/// The cells of the open model: one supported type, their Gmsh tags and node tags.
+/// The cells of the open model: per Gmsh type block, its cell type, Gmsh tags and node tags.
 struct GmshCells {
-  CellType type = CellType::Tri3;
-  std::vector<std::size_t> tags, node_tags;
+  struct Block {
+    CellType type = CellType::Tri3;
+    std::vector<std::size_t> tags, node_tags;
+  };
+  std::vector<Block> blocks;
+  std::vector<std::size_t> tags() const {
+    std::vector<std::size_t> all;
+    for (const Block& block : blocks) all.insert(all.end(), block.tags.begin(), block.tags.end());
+    return all;
+  }
+  std::vector<std::size_t> node_tags() const {
+    std::vector<std::size_t> all;
+    for (const Block& block : blocks)
+      all.insert(all.end(), block.node_tags.begin(), block.node_tags.end());
+    return all;
+  }
 };
 
-// The model's cells of the mesh dimension, which must all be of one type geompm knows.
+std::string type_list(const std::vector<int>& types) {
+  std::string found;
+  for (int type : types) found += (found.empty() ? "" : ", ") + gmsh_type_name(type);
+  return found;
+}
+
+// The model's cells of the mesh dimension, of types geompm knows: one type, or tri3 with quad4
+// (2D) and tet4 with hex8 (3D), which share their corner nodes on a conforming interface. Tri6
+// mixes with nothing: its mid-side nodes have no partner on a linear neighbour's edge.
 GmshCells read_cells(const SourceLocation& where, int dimension) {
   const char* expected = dimension == 2 ? "triangles (tri3, tri6) or quadrangles (quad4)"
                                         : "tetrahedra (tet4) or hexahedra (hex8)";
@@ -74,17 +96,28 @@ GmshCells read_cells(const SourceLocation& where, int dimension) {
   gmsh::model::mesh::getElements(types, element_tags, element_nodes, dimension, -1);
   if (types.empty())
     throw InputError(where, fmt::format("has no {}D cells; expected {}", dimension, expected));
-  for (int type : types)
+  for (int type : types) {
+    if (type == 6 || type == 7)  // Gmsh's prism and pyramid
+      throw InputError(
+          where,
+          fmt::format("has {} cells, which geompm does not support; Gmsh adds them to join "
+                      "hexahedra to tetrahedra, but expected {} only (a mixed 3D mesh of tet4 and "
+                      "hex8 is read when its hexahedra and tetrahedra meet without them)",
+                      type == 6 ? "prism (wedge)" : "pyramid", expected));
     if (!cell_type_of_gmsh(type))
       throw InputError(where, fmt::format("has {}D cells of the unsupported type {}; expected {}",
                                           dimension, gmsh_type_name(type), expected));
-  if (types.size() > 1) {
-    std::string found;
-    for (int type : types) found += (found.empty() ? "" : ", ") + gmsh_type_name(type);
-    throw InputError(where, fmt::format("has mixed {}D cell types ({}); expected one type of {}",
-                                        dimension, found, expected));
   }
-  return {*cell_type_of_gmsh(types[0]), std::move(element_tags[0]), std::move(element_nodes[0])};
+  if (types.size() > 1 && std::find(types.begin(), types.end(), 9) != types.end())
+    throw InputError(where, fmt::format("mixes tri6 with other cells ({}); tri6 cells have "
+                                        "mid-side nodes no linear cell shares, so expected tri6 "
+                                        "alone, or tri3 with quad4",
+                                        type_list(types)));
+  GmshCells cells;
+  for (std::size_t b = 0; b < types.size(); ++b)
+    cells.blocks.push_back(
+        {*cell_type_of_gmsh(types[b]), std::move(element_tags[b]), std::move(element_nodes[b])});
+  return cells;
 }
 
 // The physical groups up to the mesh dimension: regions of cells (of the mesh dimension) and
@@ -211,14 +244,22 @@ Mesh read_open_model(const std::string& path, int dimension) {
   const SourceLocation where{path, "", 0};
   const GmshCells cells = read_cells(where, dimension);
   Mesh mesh;
-  mesh.cell_type = cells.type;
+  mesh.cell_type = cells.blocks.front().type;
   const std::vector<PhysicalGroup> groups = read_physical_groups(dimension);
-  const NodeNumbering numbering = number_nodes(cells.node_tags, groups);
+  const NodeNumbering numbering = number_nodes(cells.node_tags(), groups);
   read_node_coordinates(where, numbering, mesh);
   if (dimension == 2) flatten_planar_nodes(where, numbering.used, mesh);
-  mesh.connectivity.reserve(cells.node_tags.size());
-  for (std::size_t tag : cells.node_tags) mesh.connectivity.push_back(numbering.index.at(tag));
-  add_groups(groups, cells.tags, numbering, dimension, mesh);
+  std::vector<Index> cell;
+  for (const GmshCells::Block& block : cells.blocks) {
+    const std::size_t per_cell = static_cast<std::size_t>(nodes_per_cell(block.type));
+    for (std::size_t first = 0; first < block.node_tags.size(); first += per_cell) {
+      cell.clear();
+      for (std::size_t a = 0; a < per_cell; ++a)
+        cell.push_back(numbering.index.at(block.node_tags[first + a]));
+      mesh.add_cell(block.type, cell);
+    }
+  }
+  add_groups(groups, cells.tags(), numbering, dimension, mesh);
   return mesh;
 }
 
@@ -243,6 +284,8 @@ void put_mesh(ByteWriter& writer, const Mesh& mesh) {
   writer.put(mesh.cell_type);
   writer.put(mesh.nodes);
   writer.put(mesh.connectivity);
+  writer.put(mesh.cell_types);
+  writer.put(mesh.cell_offsets);
   writer.put(mesh.cell_groups);
   writer.put(mesh.node_groups);
 }
@@ -252,6 +295,8 @@ Mesh get_mesh(ByteReader& reader) {
   reader.get(mesh.cell_type);
   reader.get(mesh.nodes);
   reader.get(mesh.connectivity);
+  reader.get(mesh.cell_types);
+  reader.get(mesh.cell_offsets);
   reader.get(mesh.cell_groups);
   reader.get(mesh.node_groups);
   reader.expect_end();

@@ -113,45 +113,62 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(mesh) {
   neighbour_cells_ = std::move(topology.cell_neighbours.entries);
 }
 
+namespace {
+
+/// Whether cell c of type T holds `x` (its padded box first, from one cache line; then the
+/// inverse of its map): fills `location`.
+template <CellType T>
+bool typed_cell_holds(const Mesh& mesh, const double* box, Index c, const Vec3& x,
+                      Location& location) {
+  constexpr int dim = Element<T>::dim;
+  const typename Element<T>::Local point = x.head<dim>();
+  for (int i = 0; i < dim; ++i)
+    if (!(point[i] >= box[i] && point[i] <= box[dim + i])) return false;
+  const auto xi = map_to_reference<T>(cell_node_coordinates<T>(mesh, c), point);
+  if (!xi || !Element<T>::contains(*xi, reference_tolerance)) return false;
+  location.cell = c;
+  location.xi.setZero();
+  location.xi.head<dim>() = *xi;
+  return true;
+}
+
+}  // namespace
+
 std::optional<Location> PointLocator::locate(const Vec3& x, Index hint) const {
-  const Index num_cells = mesh_.num_cells();
-  if (num_cells == 0) return std::nullopt;
-  return dispatch_cell_type(mesh_.cell_type, [&](auto element) -> std::optional<Location> {
-    constexpr CellType T = cell_type_of<decltype(element)>;
-    constexpr int dim = Element<T>::dim;
-    const typename Element<T>::Local point = x.head<dim>();
-    Location location;
-    // The box test rejects most candidates from one cache line; the exact test reads the
-    // cell's nodes and inverts its map.
-    const auto contains = [&](Index c) {
-      const double* box = cell_boxes_.data() + static_cast<std::size_t>(c) * 2 * dim;
-      for (int i = 0; i < dim; ++i)
-        if (!(point[i] >= box[i] && point[i] <= box[dim + i])) return false;
-      const auto xi = map_to_reference<T>(cell_node_coordinates<T>(mesh_, c), point);
-      if (!xi || !Element<T>::contains(*xi, reference_tolerance)) return false;
-      location.cell = c;
-      location.xi.head<dim>() = *xi;
-      return true;
-    };
-
-    // Most points stay in their cell or move to a neighbour within a step.
-    if (hint >= 0 && hint < num_cells) {
-      if (contains(hint)) return location;
-      for (Index k = neighbour_start_[hint]; k < neighbour_start_[hint + 1]; ++k)
-        if (contains(neighbour_cells_[k])) return location;
-    }
-
-    int bucket[3] = {0, 0, 0};
-    for (int i = 0; i < dim; ++i) {
-      if (!(point[i] >= lower_[i] && point[i] <= upper_[i])) return std::nullopt;  // also NaN
-      bucket[i] =
-          std::min(static_cast<int>((point[i] - lower_[i]) / bucket_size_[i]), buckets_[i] - 1);
-    }
-    const Index b = bucket[0] + buckets_[0] * (bucket[1] + buckets_[1] * bucket[2]);
-    for (Index k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k)
-      if (contains(bucket_cells_[k])) return location;
-    return std::nullopt;
+  if (mesh_.num_cells() == 0) return std::nullopt;
+  if (mesh_.mixed())  // per cell: its type
+    return search(x, hint, [&](Index c, Location& location) {
+      return dispatch_cell_type(mesh_.type_of(c), [&](auto e) {
+        return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_box(c), c, x, location);
+      });
+    });
+  return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
+    return search(x, hint, [&](Index c, Location& location) {
+      return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_box(c), c, x, location);
+    });
   });
+}
+
+template <class Holds>
+std::optional<Location> PointLocator::search(const Vec3& x, Index hint, Holds&& holds) const {
+  const Index num_cells = mesh_.num_cells();
+  const int dim = mesh_.dim();
+  Location location;
+  // Most points stay in their cell or move to a neighbour within a step.
+  if (hint >= 0 && hint < num_cells) {
+    if (holds(hint, location)) return location;
+    for (Index k = neighbour_start_[hint]; k < neighbour_start_[hint + 1]; ++k)
+      if (holds(neighbour_cells_[k], location)) return location;
+  }
+  int bucket[3] = {0, 0, 0};
+  for (int i = 0; i < dim; ++i) {
+    if (!(x[i] >= lower_[i] && x[i] <= upper_[i])) return std::nullopt;  // also NaN
+    bucket[i] = std::min(static_cast<int>((x[i] - lower_[i]) / bucket_size_[i]), buckets_[i] - 1);
+  }
+  const Index b = bucket[0] + buckets_[0] * (bucket[1] + buckets_[1] * bucket[2]);
+  for (Index k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k)
+    if (holds(bucket_cells_[k], location)) return location;
+  return std::nullopt;
 }
 
 }  // namespace geompm

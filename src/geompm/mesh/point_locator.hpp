@@ -27,6 +27,14 @@ class PointLocator {
   const Mesh& mesh() const { return mesh_; }
 
  private:
+  /// The search (hint, its neighbours, then the bucket of x) with holds(c, location) testing a
+  /// cell: typed once for a uniform mesh, per cell for a mixed one.
+  template <class Holds>
+  std::optional<Location> search(const Vec3& x, Index hint, Holds&& holds) const;
+  const double* cell_box(Index c) const {
+    return cell_boxes_.data() + static_cast<std::size_t>(c) * 2 * mesh_.dim();
+  }
+
   const Mesh& mesh_;
   Vec3 lower_, upper_;
   Eigen::Vector3i buckets_;

@@ -129,9 +129,9 @@ bool index_cells(const Mesh& mesh, const std::vector<std::array<int, 3>>& index,
 }  // namespace
 
 std::optional<RectilinearGrid> find_rectilinear_grid(const Mesh& mesh, std::string& why) {
-  if (mesh.cell_type != CellType::Quad4 && mesh.cell_type != CellType::Hex8) {
+  if (mesh.mixed() || (mesh.cell_type != CellType::Quad4 && mesh.cell_type != CellType::Hex8)) {
     why = fmt::format("the mesh has {} cells; a rectilinear grid has quad4 (2D) or hex8 (3D) cells",
-                      to_string(mesh.cell_type));
+                      cell_type_names(mesh));
     return std::nullopt;
   }
   RectilinearGrid grid;

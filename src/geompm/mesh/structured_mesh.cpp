@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -80,6 +81,10 @@ void add_cell(Mesh& mesh, std::initializer_list<Index> nodes) {
   mesh.connectivity.insert(mesh.connectivity.end(), nodes);
 }
 
+void add_cell(Mesh& mesh, CellType type, std::initializer_list<Index> nodes) {
+  mesh.add_cell(type, std::span<const Index>(nodes.begin(), nodes.size()));
+}
+
 Mesh generate_2d(const StructuredMeshSpec& spec) {
   const std::vector<double> x = axis_coordinates(spec.origin[0], spec.axes[0]);
   const std::vector<double> y = axis_coordinates(spec.origin[1], spec.axes[1]);
@@ -109,22 +114,26 @@ Mesh generate_2d(const StructuredMeshSpec& spec) {
       for (Index i = 0; i < nx; ++i) {
         const Index n0 = grid.id(i, j), n1 = grid.id(i + 1, j), n2 = grid.id(i + 1, j + 1),
                     n3 = grid.id(i, j + 1);
-        if (spec.cell_type == CellType::Quad4) {
-          add_cell(mesh, {n0, n1, n2, n3});
+        const CellType type =
+            spec.cell_type_at
+                ? spec.cell_type_at(Vec3(0.5 * (x[i] + x[i + 1]), 0.5 * (y[j] + y[j + 1]), 0.0))
+                : spec.cell_type;
+        if (type == CellType::Quad4) {
+          add_cell(mesh, type, {n0, n1, n2, n3});
         } else if (spec.diagonals == Diagonals::Crossed) {  // four triangles around the centre
           const Index centre = static_cast<Index>(mesh.nodes.size());
           mesh.nodes.push_back(0.25 *
                                (mesh.nodes[n0] + mesh.nodes[n1] + mesh.nodes[n2] + mesh.nodes[n3]));
-          add_cell(mesh, {n0, n1, centre});
-          add_cell(mesh, {n1, n2, centre});
-          add_cell(mesh, {n2, n3, centre});
-          add_cell(mesh, {n3, n0, centre});
+          add_cell(mesh, type, {n0, n1, centre});
+          add_cell(mesh, type, {n1, n2, centre});
+          add_cell(mesh, type, {n2, n3, centre});
+          add_cell(mesh, type, {n3, n0, centre});
         } else if ((i + j) % 2 == 0) {  // alternating diagonals avoid a directional bias
-          add_cell(mesh, {n0, n1, n2});
-          add_cell(mesh, {n0, n2, n3});
+          add_cell(mesh, type, {n0, n1, n2});
+          add_cell(mesh, type, {n0, n2, n3});
         } else {
-          add_cell(mesh, {n0, n1, n3});
-          add_cell(mesh, {n1, n2, n3});
+          add_cell(mesh, type, {n0, n1, n3});
+          add_cell(mesh, type, {n1, n2, n3});
         }
       }
   }
@@ -209,6 +218,11 @@ Mesh generate_structured_mesh(const StructuredMeshSpec& spec) {
     throw std::invalid_argument(
         std::string("structured mesh: crossed diagonals split rectangles into tri3 cells; the "
                     "cell type is ") +
+        to_string(spec.cell_type));
+  if (spec.cell_type_at && spec.cell_type != CellType::Quad4 && spec.cell_type != CellType::Tri3)
+    throw std::invalid_argument(
+        std::string("structured mesh: only quad4 and tri3 cells can be mixed (they share their "
+                    "corner nodes, so the mesh stays conforming); the cell type is ") +
         to_string(spec.cell_type));
   return dim == 2 ? generate_2d(spec) : generate_3d(spec);
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "geompm/mesh/mesh.hpp"
@@ -33,6 +34,10 @@ struct StructuredMeshSpec {
   Diagonals diagonals = Diagonals::Alternating;  // Tri3 only
   Vec3 origin = Vec3::Zero();
   std::array<std::vector<AxisSegment>, 3> axes;  // x, y (, z): only the first dim are used
+  /// 2D, quad4 or tri3 only: the type (quad4 or tri3) of the rectangle centred at a point, for a
+  /// mesh of both (e.g. a quad4 MPM region over a tri3 FEM region, seed §3.4); they share their
+  /// corner nodes, so the mesh is conforming. Empty: every rectangle is cell_type.
+  std::function<CellType(const Vec3& centre)> cell_type_at;
 };
 
 /// Node coordinates along one axis, from `origin` (size = total cells + 1).

@@ -1,6 +1,7 @@
 #include "geompm/physics/empty_cell_stiffness.hpp"
 
 #include "geompm/core/tensor.hpp"
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/point_kernel.hpp"
@@ -12,10 +13,9 @@ EmptyCellStiffness::EmptyCellStiffness(const GridSystem& grid, const DofMap& dof
     : grid_(grid),
       pressure_(pressure_field(dofs) >= 0 ? pressure : nullptr),
       m_(grid.nodes_per_cell() * (grid.dim() + (pressure_ ? 1 : 0))) {
-  dispatch_cell_type(grid.mesh().cell_type, [&](auto e) { build<decltype(e)>(); });
+  build();
 }
 
-template <class E>
 void EmptyCellStiffness::build() {
   // A small linear elastic stiffness in empty and partly filled cells keeps the system regular
   // (seed §3.2). It is scaled by the empty fraction (1 - fill) of the cell, so full cells get
@@ -25,9 +25,6 @@ void EmptyCellStiffness::build() {
   // fraction of the cell not covered by mixed points (theory eq. 11.7). Like the displacement
   // part it acts on the change over the step, holding it as weakly as the soil's own
   // compressibility would.
-  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
-  using GC = GradientComponents<dim>;
-  constexpr int nc = GC::count;
   const int m = cell_unknowns();
   const Index n_active = static_cast<Index>(grid_.active_cells().size());
   // Stored only for the cells that get some (full cells are most of a body).
@@ -47,22 +44,38 @@ void EmptyCellStiffness::build() {
   const double E_empty = grid_.settings().empty_cell_modulus, nu = 0.3;
   const Tensor4 C =
       isotropic_elasticity4(E_empty * nu / ((1 + nu) * (1 - 2 * nu)), E_empty / (2 * (1 + nu)));
+  const double pressure_factor =
+      pressure_ ? pressure_->scale() * pressure_->scale() / pressure_->reference_bulk() : 0.0;
+  for_each_cell_typed(
+      grid_.mesh(), n_active, [&](Index ci) { return grid_.active_cells()[ci]; },
+      [&](auto e, Index ci) {
+        // Full cells whose point volumes sum to a hair below the cell's get none (round-off).
+        if (offset_[ci] >= 0) build_cell<decltype(e)>(ci, C, pressure_factor);
+      },
+      n_active > 256);
+}
+
+template <class E>
+void EmptyCellStiffness::build_cell(Index ci, const Tensor4& C, double pressure_factor) {
+  constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
+  using GC = GradientComponents<dim>;
+  constexpr int nc = GC::count;
+  const int m = nen * (dim + (pressure_ ? 1 : 0));  // this cell's unknowns
   Eigen::Matrix<double, nc, nc> A;
   for (int c = 0; c < nc; ++c)
     for (int d = 0; d < nc; ++d)
       A(c, d) = C(pair_index(GC::row[c], GC::col[c]), pair_index(GC::row[d], GC::col[d]));
-  const double pressure_factor =
-      pressure_ ? pressure_->scale() * pressure_->scale() / pressure_->reference_bulk() : 0.0;
   const bool axisymmetric = grid_.axisymmetric();
-#pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
-  for (Index ci = 0; ci < n_active; ++ci) {
-    // Full cells whose point volumes sum to a hair below the cell's get none (round-off).
-    if (offset_[ci] < 0) continue;
-    const double w_u = displacement_weight(ci) > 1e-9 ? displacement_weight(ci) : 0.0;
-    const double w_p = pressure_weight(ci) > 1e-9 ? pressure_weight(ci) : 0.0;
+  const double w_u = grid_.settings().empty_cell_modulus > 0.0 && 1.0 - grid_.cell_fill()[ci] > 1e-9
+                         ? 1.0 - grid_.cell_fill()[ci]
+                         : 0.0;
+  const double w_p = pressure_ && 1.0 - grid_.cell_mixed_fill()[ci] > 1e-9
+                         ? 1.0 - grid_.cell_mixed_fill()[ci]
+                         : 0.0;
+  {
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(grid_.mesh(), grid_.active_cells()[ci]).transpose();
-    Eigen::Map<Eigen::MatrixXd> K(stiffness_.data() + std::size_t(offset_[ci]) * m * m, m, m);
+    Eigen::Map<Eigen::MatrixXd> K(stiffness_.data() + std::size_t(offset_[ci]) * m_ * m_, m, m);
     for (int q = 0; q < E::quadrature_size(); ++q) {
       const auto xi = E::quadrature_point(q);
       const auto s = make_stencil<E>(X, xi);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geompm/core/tensor.hpp"
 #include "geompm/dofs/dof_map.hpp"
 #include "geompm/physics/grid_system.hpp"
 #include "geompm/physics/local_terms.hpp"
@@ -25,13 +26,15 @@ class EmptyCellStiffness final : public CellTerm {
   bool empty() const { return stiffness_.empty(); }
 
  private:
-  template <class E>
   void build();
+  /// Active cell ci's block (its own unknowns square, at the cell's stride), of type E.
+  template <class E>
+  void build_cell(Index ci, const Tensor4& C, double pressure_factor);
   int cell_unknowns() const { return m_; }
 
   const GridSystem& grid_;
   const PressureField* pressure_;
-  int m_;                             // unknowns per cell
+  int m_;  // unknowns per cell (of the largest cell of a mixed mesh): the blocks' stride
   std::vector<std::int64_t> offset_;  // per active cell: its block in stiffness_, or -1 (none)
   std::vector<double> stiffness_;     // m_^2 per cell with (1 - fill) > 0
 };

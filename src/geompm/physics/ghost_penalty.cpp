@@ -165,6 +165,11 @@ std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
     throw std::invalid_argument(
         "numerics.ghost_penalty: needs linear cells (tri3, quad4, tet4, hex8); the jump of a "
         "quadratic cell's second derivative is not penalised");
+  if (mesh.mixed())
+    throw std::invalid_argument(
+        "numerics.ghost_penalty: needs a mesh of one cell type, but the mesh mixes cell types "
+        "(its faces between a triangle and a quadrilateral are not penalised); set "
+        "ghost_penalty: 0 or use one cell type");
   return dispatch_cell_type(mesh.cell_type, [&](auto e) {
     using E = decltype(e);
     if constexpr (E::nodes == 6) {  // refused above; not compiled for Tri6

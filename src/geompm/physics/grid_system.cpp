@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/point_kernel.hpp"
@@ -45,12 +46,35 @@ std::span<const Index> GridSystem::averaged_stencil_union(Index ci) const {
 // ---------------------------------------------------------------------------------------------
 
 void GridSystem::initialise(MaterialPoints& points) {
-  dispatch_cell_type(mesh_.cell_type, [&](auto e) { initialise_typed<decltype(e)>(points); });
+  activate_cells(points);
+  // Shape functions and reference gradients at each point, on the grid of this step.
+  const Index n_points = points.size(), n_active = static_cast<Index>(active_cells_.size());
+  shape_.assign(std::size_t(n_points) * nen_, 0.0);
+  gradients_.assign(std::size_t(n_points) * nen_ * dim_, 0.0);
+  cell_fill_.assign(n_active, 0.0);
+  cell_mixed_fill_.assign(n_active, 0.0);
+  cell_size_.assign(n_points, 0.0);
+  for_each_cell_typed(
+      mesh_, n_active, [&](Index ci) { return active_cells_[ci]; },
+      [&](auto e, Index ci) { shape_cell<decltype(e)>(points, ci); }, n_active > 256);
+
+  interpolation_->after_activation(
+      points,
+      {mesh_, node_to_active_, static_cast<Index>(active_nodes_.size()), shape_, gradients_},
+      wide_);
+  union_start_.clear();
+  union_nodes_.clear();
+  if (wide_stencil() && averaging_) build_averaged_stencil_unions(points);
+  if (mesh_.mixed())
+    dim_ == 3 ? map_to_nodes<0, 3>(points) : map_to_nodes<0, 2>(points);
+  else
+    dispatch_cell_type(mesh_.cell_type, [&](auto e) {
+      using E = decltype(e);
+      map_to_nodes<E::nodes, E::dim>(points);
+    });
 }
 
-template <class E>
-void GridSystem::initialise_typed(MaterialPoints& points) {
-  constexpr int nen = E::nodes, dim = E::dim;
+void GridSystem::activate_cells(MaterialPoints& points) {
   points.sort_by_cell();
   const Index n_points = points.size();
   const Index n_cells = mesh_.num_cells();
@@ -109,55 +133,40 @@ void GridSystem::initialise_typed(MaterialPoints& points) {
       active_nodes_.push_back(node);
     }
   colour_active_cells();
-
-  // Shape functions and reference gradients at each point, on the grid of this step.
-  shape_.assign(std::size_t(n_points) * nen, 0.0);
-  gradients_.assign(std::size_t(n_points) * nen * dim, 0.0);
-  cell_fill_.assign(n_active, 0.0);
-  cell_mixed_fill_.assign(n_active, 0.0);
-  cell_size_.assign(n_points, 0.0);
-  const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
-#pragma omp parallel for schedule(dynamic, 16) if (n_active > 256)
-  for (Index ci = 0; ci < n_active; ++ci) {
-    const Index c = active_cells_[ci];
-    const Eigen::Matrix<double, E::nodes, E::dim> X =
-        cell_node_coordinates<cell_type_of<E>>(mesh_, c).transpose();
-    double occupied = 0.0, occupied_mixed = 0.0;
-    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
-      const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
-      Eigen::Map<typename E::Values>(shape_.data() + std::size_t(p) * nen) = s.N;
-      Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() + std::size_t(p) * nen * dim) =
-          s.dN_dX;
-      occupied += points.volume[p];
-      if (is_mixed(points, p)) occupied_mixed += points.volume[p];
-    }
-    const double measure = cell_measure(mesh_, c, radial);
-    cell_fill_[ci] = fem_cell(c) ? 1.0 : std::min(1.0, occupied / measure);
-    cell_mixed_fill_[ci] = std::min(1.0, occupied_mixed / measure);
-    const double size = std::pow(cell_measure(mesh_, c, false), 1.0 / dim);
-    for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
-  }
-
-  interpolation_->after_activation(
-      points,
-      {mesh_, node_to_active_, static_cast<Index>(active_nodes_.size()), shape_, gradients_},
-      wide_);
-  union_start_.clear();
-  union_nodes_.clear();
-  if (wide_stencil() && averaging_) build_averaged_stencil_unions(points);
-  map_to_nodes<E>(points);
 }
 
 template <class E>
+void GridSystem::shape_cell(const MaterialPoints& points, Index ci) {
+  constexpr int nen = E::nodes, dim = E::dim;
+  const bool radial = settings_.kinematics == Kinematics::Axisymmetric;
+  const Index c = active_cells_[ci];
+  const Eigen::Matrix<double, E::nodes, E::dim> X =
+      cell_node_coordinates<cell_type_of<E>>(mesh_, c).transpose();
+  double occupied = 0.0, occupied_mixed = 0.0;
+  for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) {
+    const auto s = make_stencil<E>(X, points.local[p].template head<dim>());
+    Eigen::Map<typename E::Values>(shape_.data() + std::size_t(p) * nen_) = s.N;
+    Eigen::Map<Eigen::Matrix<double, nen, dim>>(gradients_.data() + std::size_t(p) * nen_ * dim) =
+        s.dN_dX;
+    occupied += points.volume[p];
+    if (is_mixed(points, p)) occupied_mixed += points.volume[p];
+  }
+  const double measure = cell_measure(mesh_, c, radial);
+  cell_fill_[ci] = fem_cell(c) ? 1.0 : std::min(1.0, occupied / measure);
+  cell_mixed_fill_[ci] = std::min(1.0, occupied_mixed / measure);
+  const double size = std::pow(cell_measure(mesh_, c, false), 1.0 / dim);
+  for (Index p = cell_point_begin_[ci]; p < cell_point_end_[ci]; ++p) cell_size_[p] = size;
+}
+
+template <int nen, int dim>
 void GridSystem::map_to_nodes(const MaterialPoints& points) {
-  constexpr int dim = E::dim;
   // Mass, momentum and acceleration to the nodes (seed eq. 9), in point order (deterministic).
   const Index n_nodes = static_cast<Index>(active_nodes_.size());
   mass_ = Vector::Zero(n_nodes);
   velocity_ = Vector::Zero(std::size_t(n_nodes) * dim_);
   acceleration_ = Vector::Zero(std::size_t(n_nodes) * dim_);
   for (Index p = 0; p < points.size(); ++p)
-    for_each_weight_typed<E::nodes>(points, p, [&](Index node, double N) {
+    for_each_weight_typed<nen>(points, p, [&](Index node, double N) {
       const double w = points.mass[p] * N;
       mass_(node) += w;
       for (int i = 0; i < dim; ++i) {
@@ -222,21 +231,28 @@ void GridSystem::build_averaged_stencil_unions(const MaterialPoints& points) {
 
 void GridSystem::convect(MaterialPoints& points, const Vector& du, const Vector& velocity,
                          const Vector& acceleration, double dt, bool dynamic) const {
+  if (mesh_.mixed()) {
+    if (dim_ == 3)
+      convect_typed<0, 3>(points, du, velocity, acceleration, dt, dynamic);
+    else
+      convect_typed<0, 2>(points, du, velocity, acceleration, dt, dynamic);
+    return;
+  }
   dispatch_cell_type(mesh_.cell_type, [&](auto e) {
-    convect_typed<decltype(e)>(points, du, velocity, acceleration, dt, dynamic);
+    using E = decltype(e);
+    convect_typed<E::nodes, E::dim>(points, du, velocity, acceleration, dt, dynamic);
   });
 }
 
-template <class E>
+template <int nen, int dim>
 void GridSystem::convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
                                const Vector& acceleration, double dt, bool dynamic) const {
-  constexpr int dim = E::dim;
   const Index n_points = points.size();
 #pragma omp parallel for schedule(static) if (n_points > 4096)
   for (Index p = 0; p < n_points; ++p) {
     // Eq. 7.1 with the point's weights of this step (cell or wide stencil).
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero(), a = Vec3::Zero();
-    for_each_weight_typed<E::nodes>(points, p, [&](Index node, double N) {
+    for_each_weight_typed<nen>(points, p, [&](Index node, double N) {
       for (int i = 0; i < dim; ++i) {
         dx(i) += N * du(node * dim + i);
         dv(i) += N * (velocity(node * dim + i) - velocity_(node * dim + i));

@@ -90,6 +90,8 @@ class GridSystem {
   const GridSettings& settings() const { return settings_; }
   const std::vector<const Material*>& materials() const { return materials_; }
   int dim() const { return dim_; }
+  /// Nodes of a cell: of every cell of a uniform mesh, of the largest cell of a mixed one (the
+  /// stride of the per-point shape arrays and of the per-cell blocks of the cells' terms).
   int nodes_per_cell() const { return nen_; }
   bool axisymmetric() const { return settings_.kinematics == Kinematics::Axisymmetric; }
   /// True if some material is mixed: the step has pressure unknowns.
@@ -127,7 +129,8 @@ class GridSystem {
   // --- how points see the grid -----------------------------------------------------------------
   /// Whether points see the grid through a stencil wider than their cell (DDMP, GIMP).
   bool wide_stencil() const { return wide_stencil_; }
-  /// Point p's shape values (nen) and reference gradients (nen x dim, column-major) in its cell.
+  /// Point p's shape values (its cell's nodes) and reference gradients (nodes x dim,
+  /// column-major) in its cell; stored nodes_per_cell() and nodes_per_cell() x dim apart.
   const double* cell_shape(Index p) const { return shape_.data() + std::size_t(p) * nen_; }
   const double* cell_gradients(Index p) const {
     return gradients_.data() + std::size_t(p) * nen_ * dim_;
@@ -150,14 +153,17 @@ class GridSystem {
   Vec3 interpolate(const MaterialPoints& points, Index p, const Vector& nodal) const;
 
  private:
+  void activate_cells(MaterialPoints& points);
+  /// The shape values and gradients of the points of active cell ci, of type E, and its fill.
   template <class E>
-  void initialise_typed(MaterialPoints& points);
-  template <class E>
+  void shape_cell(const MaterialPoints& points, Index ci);
+  template <int nen, int dim>
   void map_to_nodes(const MaterialPoints& points);
-  template <class E>
+  template <int nen, int dim>
   void convect_typed(MaterialPoints& points, const Vector& du, const Vector& velocity,
                      const Vector& acceleration, double dt, bool dynamic) const;
-  /// for_each_weight with the cell's node count known at compile time.
+  /// for_each_weight with the cell's node count known at compile time (0: of a mixed mesh, the
+  /// point's cell's).
   template <int nen, class F>
   void for_each_weight_typed(const MaterialPoints& points, Index p, F&& f) const;
   void build_averaged_stencil_unions(const MaterialPoints& points);
@@ -200,7 +206,8 @@ void GridSystem::for_each_weight(const MaterialPoints& points, Index p, F&& f) c
     return;
   }
   const auto nodes = mesh_.cell_nodes(points.cell[p]);
-  for (int a = 0; a < nen_; ++a) f(node_to_active_[nodes[a]], shape_[std::size_t(p) * nen_ + a]);
+  const double* N = shape_.data() + std::size_t(p) * nen_;
+  for (std::size_t a = 0; a < nodes.size(); ++a) f(node_to_active_[nodes[a]], N[a]);
 }
 
 template <int nen, class F>
@@ -209,9 +216,11 @@ void GridSystem::for_each_weight_typed(const MaterialPoints& points, Index p, F&
     for (Index a = wide_.start[p]; a < wide_.start[p + 1]; ++a) f(wide_.nodes[a], wide_.N[a]);
     return;
   }
-  const Index* nodes = mesh_.cell_nodes(points.cell[p]).data();
-  const double* N = shape_.data() + std::size_t(p) * nen;
-  for (int a = 0; a < nen; ++a) f(node_to_active_[nodes[a]], N[a]);
+  const auto cell = mesh_.cell_nodes(points.cell[p]);
+  const Index* nodes = cell.data();
+  const double* N = shape_.data() + std::size_t(p) * (nen > 0 ? nen : nen_);
+  const int count = nen > 0 ? nen : static_cast<int>(cell.size());
+  for (int a = 0; a < count; ++a) f(node_to_active_[nodes[a]], N[a]);
 }
 
 }  // namespace geompm

@@ -50,16 +50,18 @@ void PointIntegrator::attach(const SparseMatrix& pattern) {
 #pragma omp parallel for schedule(dynamic, 64) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
     const auto nodes = grid_.mesh().cell_nodes(grid_.active_cells()[ci]);
+    const int nen = static_cast<int>(nodes.size());  // of a mixed mesh, below nen_
+    const int m_cell = cell_unknowns(nen);
     std::array<Index, 27> active{};
-    for (int a = 0; a < nen_; ++a) active[a] = node_to_active[nodes[a]];
+    for (int a = 0; a < nen; ++a) active[a] = node_to_active[nodes[a]];
     std::array<Index, 27 * 4> free{};  // per local unknown: its free index (-1: constrained)
-    for (int l = 0; l < m; ++l) free[l] = dofs_.free_index(local_dof(active, nen_, l));
-    for (int lc = 0; lc < m; ++lc) {
+    for (int l = 0; l < m_cell; ++l) free[l] = dofs_.free_index(local_dof(active, nen, l));
+    for (int lc = 0; lc < m_cell; ++lc) {
       const Index col = free[lc];
       if (col < 0) continue;
       const int* begin = pattern.innerIndexPtr() + pattern.outerIndexPtr()[col];
       const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[col + 1];
-      for (int lr = 0; lr < m; ++lr) {
+      for (int lr = 0; lr < m_cell; ++lr) {
         const Index row = free[lr];
         if (row < 0) continue;
         const int* at = std::lower_bound(begin, end, row);
@@ -72,11 +74,17 @@ void PointIntegrator::attach(const SparseMatrix& pattern) {
 
 bool PointIntegrator::add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) {
   inadmissible_point_ = -1;
-  const bool cells_ok = dispatch_cell_type(grid_.mesh().cell_type, [&](auto e) {
-    using E = decltype(e);
-    return pressure_ ? add_cells<E, true>(du, forces.internal, tangent)
-                     : add_cells<E, false>(du, forces.internal, tangent);
-  });
+  // A mixed mesh's cells one type at a time (add_cells skips the others).
+  bool cells_ok = true;
+  for (CellType type : grid_.mesh().types_present())
+    cells_ok = dispatch_cell_type(type,
+                                  [&](auto e) {
+                                    using E = decltype(e);
+                                    return pressure_
+                                               ? add_cells<E, true>(du, forces.internal, tangent)
+                                               : add_cells<E, false>(du, forces.internal, tangent);
+                                  }) &&
+               cells_ok;
   if (!grid_.wide_stencil()) return cells_ok;
   const bool wide_ok = dim_ == 3 ? add_wide_stencil_points<3>(du, forces.internal, tangent)
                                  : add_wide_stencil_points<2>(du, forces.internal, tangent);

@@ -109,7 +109,9 @@ class PointIntegrator final : public Contribution {
     return l < n ? dofs_.dof(displacement_, active[l / dim_], l % dim_)
                  : dofs_.dof(pressure_field_, active[l - n]);
   }
-  int cell_unknowns() const { return nen_ * dim_ + (pressure_ ? nen_ : 0); }
+  /// Unknowns of a cell of `nen` nodes; by default of the largest cell (the scatter's stride).
+  int cell_unknowns(int nen) const { return nen * dim_ + (pressure_ ? nen : 0); }
+  int cell_unknowns() const { return cell_unknowns(nen_); }
   void note_inadmissible(Index p, bool stress_update_failed = false) const;
   /// Point p's updated state at the current evaluation: written to the points only when
   /// commit_state() asks for it (`stress`: the total stress, which the mixed formulation

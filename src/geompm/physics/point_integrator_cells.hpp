@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 #include "geompm/physics/exact_pressure_projection.hpp"
 #include "geompm/physics/mixed_point_kernel.hpp"
@@ -121,11 +122,15 @@ void PointIntegrator::add_point_terms(Index p, const Eigen::Matrix<double, NS, 1
 template <class E, bool Mixed>
 bool PointIntegrator::add_cells(const Vector& du, Vector& f_int, SparseMatrix* tangent) {
   std::atomic<bool> admissible{true};
+  const Mesh& mesh = grid_.mesh();
+  const bool mixed_mesh = mesh.mixed();  // then only this type's cells
   for (const auto& colour : grid_.colours()) {
     const Index count = static_cast<Index>(colour.size());
 #pragma omp parallel for schedule(dynamic, 8) if (count > 64)
-    for (Index k = 0; k < count; ++k)
+    for (Index k = 0; k < count; ++k) {
+      if (mixed_mesh && mesh.type_of(grid_.active_cells()[colour[k]]) != cell_type_of<E>) continue;
       if (!add_cell<E, Mixed>(colour[k], du, f_int, tangent)) admissible = false;
+    }
   }
   return admissible;
 }
@@ -175,11 +180,12 @@ bool PointIntegrator::add_cell(Index ci, const Vector& du, Vector& f_int, Sparse
                                                           tangent != nullptr, f_cell, K_cell);
   for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
   if (tangent) {
-    const int* map = scatter_.data() + std::size_t(ci) * m * m;
+    const int stride = cell_unknowns();  // m, or of a mixed mesh's largest cell
+    const int* map = scatter_.data() + std::size_t(ci) * stride * stride;
     double* values = tangent->valuePtr();
     for (int lc = 0; lc < m; ++lc)
       for (int lr = 0; lr < m; ++lr) {
-        const int at = map[lc * m + lr];
+        const int at = map[lc * stride + lr];
         if (at >= 0) values[at] += K_cell(lr, lc);
       }
   }

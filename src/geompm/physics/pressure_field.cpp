@@ -13,7 +13,6 @@ void PressureField::initialise(const GridSystem& grid, const MaterialPoints& poi
   // stress they carry) averaged onto the nodes with weights N v, so that Newton starts from the
   // last converged pressure field instead of from zero.
   const Index n_nodes = static_cast<Index>(grid.active_nodes().size());
-  const int nen = grid.nodes_per_cell();
   const auto& node_to_active = grid.node_to_active();
   double shear = 0.0, bulk = 0.0, size = 0.0;
   Index count = 0;
@@ -30,7 +29,7 @@ void PressureField::initialise(const GridSystem& grid, const MaterialPoints& poi
     const double pressure = -points.stress[p].trace() / 3.0;
     const auto nodes = grid.mesh().cell_nodes(points.cell[p]);
     const double* N = grid.cell_shape(p);
-    for (int a = 0; a < nen; ++a) {
+    for (std::size_t a = 0; a < nodes.size(); ++a) {  // a mixed mesh's cells differ
       const double w = N[a] * points.volume[p];
       weight(node_to_active[nodes[a]]) += w;
       start_(node_to_active[nodes[a]]) += w * pressure;

@@ -8,8 +8,8 @@
 namespace geompm {
 namespace {
 
-template <class E>
-std::vector<NodeBlock> springs_typed(const GridSystem& grid, const MaterialPoints& points) {
+std::vector<NodeBlock> springs_of_sparse_nodes(const GridSystem& grid,
+                                               const MaterialPoints& points) {
   // A node whose support the points barely reach (a soil point at the far corner of its support,
   // the rest emptied, as beside a footing's edge) is held only by the empty-cell stiffness of its
   // cells: Newton's corrections move it by as much as the step's increment, and a contact or a
@@ -19,7 +19,7 @@ std::vector<NodeBlock> springs_typed(const GridSystem& grid, const MaterialPoint
   // from each of its cells, on the step's displacement like the empty-cell stiffness: one
   // diagonal block per such node, summed over its cells once a step.
   std::vector<NodeBlock> springs;
-  constexpr int nen = E::nodes, dim = E::dim;
+  const int dim = grid.dim();
   const Index n_nodes = static_cast<Index>(grid.active_nodes().size());
   const bool radial = grid.axisymmetric();
   const Mesh& mesh = grid.mesh();
@@ -27,6 +27,7 @@ std::vector<NodeBlock> springs_typed(const GridSystem& grid, const MaterialPoint
   for (Index ci = 0; ci < static_cast<Index>(grid.active_cells().size()); ++ci) {
     const Index c = grid.active_cells()[ci];
     const auto nodes = mesh.cell_nodes(c);
+    const int nen = static_cast<int>(nodes.size());  // a mixed mesh's cells differ
     const double share = cell_measure(mesh, c, radial) / nen;
     const double spring = share / std::pow(cell_measure(mesh, c, false), 2.0 / dim);
     for (int a = 0; a < nen; ++a) {
@@ -55,8 +56,7 @@ std::vector<NodeBlock> springs_typed(const GridSystem& grid, const MaterialPoint
 
 std::vector<NodeBlock> sparse_node_springs(const GridSystem& grid, const MaterialPoints& points) {
   if (grid.settings().sparse_node_modulus <= 0.0) return {};
-  return dispatch_cell_type(grid.mesh().cell_type,
-                            [&](auto e) { return springs_typed<decltype(e)>(grid, points); });
+  return springs_of_sparse_nodes(grid, points);
 }
 
 }  // namespace geompm

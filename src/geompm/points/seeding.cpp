@@ -205,14 +205,15 @@ std::vector<int> allowed_points_per_cell(CellType type) {
 }
 
 std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axisymmetric) {
-  const auto allowed = allowed_points_per_cell(mesh.cell_type);
+  const CellType type = mesh.type_of(c);
+  const auto allowed = allowed_points_per_cell(type);
   if (std::find(allowed.begin(), allowed.end(), count) == allowed.end()) {
     std::string list;
     for (int n : allowed) list += (list.empty() ? "" : ", ") + std::to_string(n);
     throw std::invalid_argument(std::to_string(count) + " points per cell is not available for " +
-                                to_string(mesh.cell_type) + " cells; expected one of " + list);
+                                to_string(type) + " cells; expected one of " + list);
   }
-  return dispatch_cell_type(mesh.cell_type, [&](auto element) -> std::vector<SeedPoint> {
+  return dispatch_cell_type(type, [&](auto element) -> std::vector<SeedPoint> {
     using E = decltype(element);
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(mesh, c).transpose();

@@ -67,6 +67,11 @@ struct MeshRegion {
     SourceLocation source;
   };
   std::optional<Near> near;
+  /// Of a generated mesh: the cell type of the region's rectangles (tri3 in a quad4 mesh or quad4
+  /// in a tri3 one), e.g. a quad4 MPM region over a tri3 FEM region (seed §3.4); none: the
+  /// generator's.
+  std::optional<CellType> cell;
+  SourceLocation cell_source;
   SourceLocation source;
 };
 

@@ -71,6 +71,11 @@ StructureMesh::StructureMesh(Mesh mesh, Kinematics kinematics)
     throw std::invalid_argument(fmt::format(
         "a structure of {} cells in a {} model: expected {}D cells", to_string(mesh_.cell_type),
         to_string(kinematics), spatial_dimension(kinematics)));
+  // A structure's cells are integrated and located as one type (structure_quadrature.hpp).
+  if (mesh_.mixed())
+    throw std::invalid_argument(
+        fmt::format("a structure's mesh mixes cell types ({}); expected cells of one type",
+                    cell_type_names(mesh_)));
   Vec3 lower = mesh_.nodes.front(), upper = lower;
   for (const Vec3& x : mesh_.nodes) lower = lower.cwiseMin(x), upper = upper.cwiseMax(x);
   const double tolerance = 1e-9 * (upper - lower).norm();

@@ -35,7 +35,8 @@ TEST(FemRegion, KnowsItsCellsAndNodes) {
   const Mesh mesh = unit_grid(4);
   const FemRegion region(mesh, lower_half_fem(mesh));
   EXPECT_EQ(region.cells().size(), 8u);
-  EXPECT_EQ(region.points_per_cell(), 4);
+  EXPECT_EQ(region.gauss_begin(1), 4);  // quad4: 2 x 2 Gauss points each
+  EXPECT_EQ(region.gauss_begin(8), 32);
   Index fem_nodes = 0;
   for (char f : region.fem_node()) fem_nodes += f;
   EXPECT_EQ(fem_nodes, 15);  // the nodes at y = 0, 1, 2

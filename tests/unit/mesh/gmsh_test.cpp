@@ -211,19 +211,65 @@ TEST(GmshImportTest, TwoDimensionalMeshOutOfPlane) {
   EXPECT_NE(message.find("Gmsh node 3 "), std::string::npos) << message;
 }
 
-TEST(GmshImportTest, MixedCellTypes) {
+TEST(GmshImportTest, MixedTrianglesAndQuadrilaterals) {
   TemporaryDirectory directory;
-  // Nodes 1-4 (square) plus 5-6: a quadrangle 2-5-6-3 next to triangle 1-2-3.
+  // Nodes 1-4 (square) plus 5-6: a quadrangle 2-5-6-3 next to triangle 1-2-3 (node 4 unused).
   const std::string path =
       write_file(directory, "mixed.msh",
                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
                  "$Nodes\n1 6 1 6\n2 1 0 6\n1\n2\n3\n4\n5\n6\n"
                  "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n$EndNodes\n"
                  "$Elements\n2 2 1 2\n2 1 2 1\n1 1 2 3\n2 1 3 1\n2 2 5 6 3\n$EndElements\n");
-  const std::string message = import_error(path, 2);
-  EXPECT_NE(message.find("mixed"), std::string::npos) << message;
-  EXPECT_NE(message.find("tri3"), std::string::npos) << message;
-  EXPECT_NE(message.find("quad4"), std::string::npos) << message;
+  const Mesh mesh = read_gmsh_mesh(path, 2);
+  ASSERT_TRUE(mesh.mixed());
+  ASSERT_EQ(mesh.num_cells(), 2);
+  EXPECT_EQ(mesh.type_of(0), CellType::Tri3);
+  EXPECT_EQ(mesh.type_of(1), CellType::Quad4);
+  EXPECT_EQ(mesh.cell_nodes(0).size(), 3u);
+  EXPECT_EQ(mesh.cell_nodes(1).size(), 4u);
+  EXPECT_EQ(mesh.num_nodes(), 5);
+  // The two cells share the edge 2-3 (geompm's nodes 1 and 2).
+  EXPECT_EQ(mesh.cell_nodes(1)[0], mesh.cell_nodes(0)[1]);
+  EXPECT_EQ(mesh.cell_nodes(1)[3], mesh.cell_nodes(0)[2]);
+  EXPECT_NEAR(total_measure(mesh), 1.5, 1e-14);
+}
+
+TEST(GmshImportTest, MixedTetrahedraAndHexahedra) {
+  TemporaryDirectory directory;
+  // A unit hexahedron and a tetrahedron on its corner (1, 0, 0).
+  const std::string path = write_file(
+      directory, "mixed3d.msh",
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+      "$Nodes\n1 11 1 11\n3 1 0 11\n1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n2 0 0\n2 1 0\n2 0 1\n"
+      "$EndNodes\n"
+      "$Elements\n2 2 1 2\n3 1 5 1\n1 1 2 3 4 5 6 7 8\n3 1 4 1\n2 2 9 10 11\n$EndElements\n");
+  const Mesh mesh = read_gmsh_mesh(path, 3);
+  ASSERT_TRUE(mesh.mixed());
+  EXPECT_EQ(cell_type_names(mesh), "tet4 + hex8");
+  EXPECT_NEAR(total_measure(mesh), 1.0 + 1.0 / 6.0, 1e-14);
+}
+
+TEST(GmshImportTest, RefusePyramidsAndTri6MixedWithLinearCells) {
+  TemporaryDirectory directory;
+  const std::string pyramid =
+      write_file(directory, "pyramid.msh",
+                 "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                 "$Nodes\n1 5 1 5\n3 1 0 5\n1\n2\n3\n4\n5\n"
+                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n$EndNodes\n"
+                 "$Elements\n1 1 1 1\n3 1 7 1\n1 1 2 3 4 5\n$EndElements\n");
+  std::string message = import_error(pyramid, 3);
+  EXPECT_NE(message.find("pyramid"), std::string::npos) << message;
+  EXPECT_NE(message.find("pyramid.msh"), std::string::npos) << message;
+  // A tri6 (corners 1 2 3, mid-sides 7 8 9) beside the quadrangle 2-5-6-3.
+  const std::string tri6 =
+      write_file(directory, "tri6_quad4.msh",
+                 "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                 "$Nodes\n1 8 1 8\n2 1 0 8\n1\n2\n3\n5\n6\n7\n8\n9\n"
+                 "0 0 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n0.5 0 0\n1 0.5 0\n0.5 0.5 0\n$EndNodes\n"
+                 "$Elements\n2 2 1 2\n2 1 9 1\n1 1 2 3 7 8 9\n2 1 3 1\n2 2 5 6 3\n$EndElements\n");
+  message = import_error(tri6, 2);
+  EXPECT_NE(message.find("mixes tri6"), std::string::npos) << message;
 }
 
 TEST(GmshImportTest, UnsupportedCellType) {

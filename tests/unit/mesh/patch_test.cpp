@@ -7,6 +7,7 @@
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/point_locator.hpp"
+#include "geompm/mesh/structured_mesh.hpp"
 #include "mesh_test_support.hpp"
 
 namespace geompm {
@@ -97,6 +98,50 @@ TEST(PatchTest, UnstructuredGmshMeshes) {
     patch_test_at_reference_points(mesh, 7);
     patch_test_at_physical_points(mesh, Vec3::Zero(), testing::gmsh_domain_size, 8);
   }
+}
+
+TEST(PatchTest, MixedQuadAndTriangleMesh) {
+  // A generated 6 x 6 mesh, rectangles left of x = 0.5 split in tri3: one linear field over both
+  // kinds of cell, located across their interface.
+  StructuredMeshSpec spec;
+  spec.cell_type = CellType::Quad4;
+  spec.axes[0] = {{1.0, 6, 1.0}};
+  spec.axes[1] = {{1.0, 6, 1.0}};
+  spec.cell_type_at = [](const Vec3& x) { return x.x() < 0.5 ? CellType::Tri3 : CellType::Quad4; };
+  const Mesh mesh = generate_structured_mesh(spec);
+  ASSERT_TRUE(mesh.mixed());
+  ASSERT_NO_THROW(validate_mesh(mesh, "mixed"));
+  EXPECT_EQ(mesh.num_cells(), 18 * 2 + 18);
+  EXPECT_NEAR(testing::total_measure(mesh), 1.0, 1e-14);
+  Eigen::Matrix2d A;
+  A << 0.3, -1.2, 0.7, 0.4;
+  const Eigen::Vector2d offset(0.1, -0.5);
+  const PointLocator locator(mesh);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int in_triangles = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 x(unit(rng), unit(rng), 0.0);
+    const auto location = locator.locate(x);
+    ASSERT_TRUE(location.has_value()) << x.transpose();
+    in_triangles += mesh.type_of(location->cell) == CellType::Tri3;
+    dispatch_cell_type(mesh.type_of(location->cell), [&](auto element) {
+      using E = decltype(element);
+      constexpr CellType T = cell_type_of<E>;
+      if constexpr (E::dim != 2)
+        return;  // a 2D mesh: the 3D types are not instantiated
+      else {
+        const NodeCoordinates<T> nodes = cell_node_coordinates<T>(mesh, location->cell);
+        const NodeCoordinates<T> nodal_u = (A * nodes).colwise() + offset;
+        const typename E::Local xi = location->xi.template head<2>();
+        EXPECT_LT((nodal_u * E::shape(xi) - (A * x.head<2>() + offset)).norm(), 1e-12);
+        const auto J = jacobian<T>(nodes, xi);
+        EXPECT_LT((nodal_u * (E::shape_gradients(xi) * J.inverse()) - A).norm(), 1e-12);
+      }
+    });
+  }
+  EXPECT_GT(in_triangles, 800);
+  EXPECT_LT(in_triangles, 1200);
 }
 
 TEST(PatchTest, FailsForAFieldThatIsNotLinear) {
