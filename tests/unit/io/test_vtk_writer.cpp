@@ -346,6 +346,26 @@ TEST(VtkWriter, Tri3AndTet4HaveTheirVtkCellTypes) {
   expect_cells(read_with_meshio(dir.path() / "tet.vtu"), "tetra", tet);
 }
 
+TEST(VtkWriter, AMixedMeshWritesEachCellWithItsOwnType) {
+  // A triangle beside a quadrangle (issue 43): VTK reads each with its type and its nodes.
+  TempDir dir;
+  Mesh mesh;
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+  const std::vector<Index> triangle = {0, 1, 2}, quadrangle = {1, 3, 4, 2};
+  mesh.add_cell(CellType::Tri3, triangle);
+  mesh.add_cell(CellType::Quad4, quadrangle);
+  ASSERT_TRUE(mesh.mixed());
+  FieldSet cells;
+  cells.scalars.push_back({"fill", {0.25, 0.75}});
+  write_vtu_mesh(dir.path() / "mixed.vtu", mesh, mesh.nodes, {}, cells);
+  const ReadVtu read = read_with_meshio(dir.path() / "mixed.vtu");
+  ASSERT_EQ(read.cells.count("triangle"), 1u);
+  ASSERT_EQ(read.cells.count("quad"), 1u);
+  EXPECT_EQ(read.cells.at("triangle"), (std::vector<std::vector<double>>{{0, 1, 2}}));
+  EXPECT_EQ(read.cells.at("quad"), (std::vector<std::vector<double>>{{1, 3, 4, 2}}));
+  expect_scalars(read.cell_data.at("fill"), {0.25});  // meshio's first block: the triangle
+}
+
 TEST(VtkWriter, MeshFieldsOfWrongSizeAreRefusedWithTheirName) {
   TempDir dir;
   const Mesh mesh = two_quads();
