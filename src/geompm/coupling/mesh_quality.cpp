@@ -10,19 +10,25 @@ namespace geompm {
 namespace {
 
 // The corner polygons of a cell type's faces (the cell itself in 2D), as local nodes in order.
-std::vector<std::vector<int>> corner_polygons(CellType type) {
+const std::vector<std::vector<int>>& corner_polygons(CellType type) {
+  using Polygons = std::vector<std::vector<int>>;
+  static const Polygons triangle = {{0, 1, 2}};
+  static const Polygons quadrangle = {{0, 1, 2, 3}};
+  static const Polygons tetrahedron = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
+  static const Polygons hexahedron = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   switch (type) {
     case CellType::Tri3:
     case CellType::Tri6:
-      return {{0, 1, 2}};
+      return triangle;
     case CellType::Quad4:
-      return {{0, 1, 2, 3}};
+      return quadrangle;
     case CellType::Tet4:
-      return {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
+      return tetrahedron;
     case CellType::Hex8:
-      return {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+      break;
   }
-  return {};
+  return hexahedron;
 }
 
 }  // namespace
@@ -31,7 +37,7 @@ MeshQuality mesh_quality(const Mesh& mesh, const std::vector<char>& which) {
   MeshQuality quality;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     if (!which.empty() && !which[c]) continue;
-    const auto polygons = corner_polygons(mesh.type_of(c));
+    const auto& polygons = corner_polygons(mesh.type_of(c));
     const auto nodes = mesh.cell_nodes(c);
     double shortest = std::numeric_limits<double>::max(), longest = 0.0;
     for (const auto& polygon : polygons) {

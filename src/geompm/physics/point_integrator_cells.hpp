@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <type_traits>
 
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
@@ -180,14 +181,21 @@ bool PointIntegrator::add_cell(Index ci, const Vector& du, Vector& f_int, Sparse
                                                           tangent != nullptr, f_cell, K_cell);
   for (int l = 0; l < m; ++l) f_int(local_dof(active, nen, l)) += f_cell(l);
   if (tangent) {
-    const int stride = cell_unknowns();  // m, or of a mixed mesh's largest cell
-    const int* map = scatter_.data() + std::size_t(ci) * stride * stride;
-    double* values = tangent->valuePtr();
-    for (int lc = 0; lc < m; ++lc)
-      for (int lr = 0; lr < m; ++lr) {
-        const int at = map[lc * stride + lr];
-        if (at >= 0) values[at] += K_cell(lr, lc);
-      }
+    // The scatter map's stride is m, or on a mixed mesh that of its largest cell: known at compile
+    // time on a mesh of one type (the loop unrolls as before).
+    const auto scatter = [&](auto stride) {
+      const int* map = scatter_.data() + std::size_t(ci) * stride * stride;
+      double* values = tangent->valuePtr();
+      for (int lc = 0; lc < m; ++lc)
+        for (int lr = 0; lr < m; ++lr) {
+          const int at = map[lc * stride + lr];
+          if (at >= 0) values[at] += K_cell(lr, lc);
+        }
+    };
+    if (const int stride = cell_unknowns(); stride == m)
+      scatter(std::integral_constant<int, m>{});
+    else
+      scatter(stride);
   }
   return admissible;
 }
