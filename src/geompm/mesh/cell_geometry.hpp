@@ -69,7 +69,10 @@ using Jacobian = Eigen::Matrix<double, Element<T>::dim, Element<T>::dim>;
 template <CellType T>
 NodeCoordinates<T> cell_node_coordinates(const Mesh& mesh, Index c) {
   NodeCoordinates<T> coordinates;
-  const Index* ids = mesh.cell_nodes(c).data();
+  // A mesh of one type: the compile-time stride, as every cell has Element<T>::nodes.
+  const Index* ids =
+      mesh.connectivity.data() + (mesh.mixed() ? static_cast<std::size_t>(mesh.cell_offsets[c])
+                                               : static_cast<std::size_t>(c) * Element<T>::nodes);
   for (int a = 0; a < Element<T>::nodes; ++a)
     coordinates.col(a) = mesh.nodes[ids[a]].template head<Element<T>::dim>();
   return coordinates;

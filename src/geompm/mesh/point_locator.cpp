@@ -115,12 +115,13 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(mesh) {
 
 namespace {
 
-/// Whether cell c of type T holds `x` (its padded box first, from one cache line; then the
-/// inverse of its map): fills `location`.
+/// Whether cell c of type T holds `x` (its padded box of `boxes` first, from one cache line;
+/// then the inverse of its map): fills `location`.
 template <CellType T>
-bool typed_cell_holds(const Mesh& mesh, const double* box, Index c, const Vec3& x,
+bool typed_cell_holds(const Mesh& mesh, const double* boxes, Index c, const Vec3& x,
                       Location& location) {
   constexpr int dim = Element<T>::dim;
+  const double* box = boxes + static_cast<std::size_t>(c) * 2 * dim;
   const typename Element<T>::Local point = x.head<dim>();
   for (int i = 0; i < dim; ++i)
     if (!(point[i] >= box[i] && point[i] <= box[dim + i])) return false;
@@ -139,12 +140,13 @@ std::optional<Location> PointLocator::locate(const Vec3& x, Index hint) const {
   if (mesh_.mixed())  // per cell: its type
     return search(x, hint, [&](Index c, Location& location) {
       return dispatch_cell_type(mesh_.type_of(c), [&](auto e) {
-        return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_box(c), c, x, location);
+        return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_boxes_.data(), c, x,
+                                                           location);
       });
     });
   return dispatch_cell_type(mesh_.cell_type, [&](auto e) {
     return search(x, hint, [&](Index c, Location& location) {
-      return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_box(c), c, x, location);
+      return typed_cell_holds<cell_type_of<decltype(e)>>(mesh_, cell_boxes_.data(), c, x, location);
     });
   });
 }

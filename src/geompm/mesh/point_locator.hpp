@@ -31,9 +31,6 @@ class PointLocator {
   /// cell: typed once for a uniform mesh, per cell for a mixed one.
   template <class Holds>
   std::optional<Location> search(const Vec3& x, Index hint, Holds&& holds) const;
-  const double* cell_box(Index c) const {
-    return cell_boxes_.data() + static_cast<std::size_t>(c) * 2 * mesh_.dim();
-  }
 
   const Mesh& mesh_;
   Vec3 lower_, upper_;

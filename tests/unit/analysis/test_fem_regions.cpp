@@ -276,12 +276,19 @@ void expect_patch_passes(const testing::ModelRun& run, const MaterialPoints& poi
 }
 
 TEST(MixedMeshes, MpmPatchTestOnQuadAndTriangleCells) {
-  const auto run = testing::run_spec(
-      read_model_from_string(mixed_layer(kLeftTriangles, "0.01", "1.0"), "layer.yaml"),
-      "mixed_mpm");
-  ASSERT_TRUE(run.model->mesh.mixed());
-  EXPECT_FALSE(run.model->fem);
-  expect_patch_passes(run, run.model->points);
+  // The displacement formulation and the mixed p-u one (a pressure unknown at every node of
+  // both kinds of cell, the stabilisation and the empty cells' pressure block per cell type).
+  for (const std::string formulation : {"displacement", "mixed"}) {
+    SCOPED_TRACE(formulation);
+    const std::string text =
+        testing::replace_once(mixed_layer(kLeftTriangles, "0.01", "1.0"), "nu: 0.3, density: 0}",
+                              "nu: 0.3, density: 0, formulation: " + formulation + "}");
+    const auto run =
+        testing::run_spec(read_model_from_string(text, "layer.yaml"), "mixed_mpm_" + formulation);
+    ASSERT_TRUE(run.model->mesh.mixed());
+    EXPECT_FALSE(run.model->fem);
+    expect_patch_passes(run, run.model->points);
+  }
 }
 
 TEST(MixedMeshes, FemPatchTestOnQuadAndTriangleCells) {
