@@ -1,8 +1,10 @@
 // Gmsh: generation of unstructured meshes, import, and the errors a user sees for bad files.
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <clocale>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +12,7 @@
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_generate.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
+#include "geompm/mesh/gmsh_session.hpp"
 #include "mesh_test_support.hpp"
 
 namespace geompm {
@@ -232,6 +235,53 @@ TEST(GmshImportTest, MixedTrianglesAndQuadrilaterals) {
   EXPECT_EQ(mesh.cell_nodes(1)[0], mesh.cell_nodes(0)[1]);
   EXPECT_EQ(mesh.cell_nodes(1)[3], mesh.cell_nodes(0)[2]);
   EXPECT_NEAR(total_measure(mesh), 1.5, 1e-14);
+}
+
+TEST(GmshImportTest, AMeshGmshMakesOfTrianglesAndRecombinedQuadrilaterals) {
+  // Two unit squares side by side, the right one recombined into quadrangles: Gmsh meshes their
+  // shared edge once, so the triangles and the quadrangles share its nodes.
+  Mesh mesh;
+  {
+    GmshSession session;
+    gmsh::model::add("mixed");
+    namespace geo = gmsh::model::geo;
+    const double h = 0.25;
+    const int p1 = geo::addPoint(0, 0, 0, h), p2 = geo::addPoint(1, 0, 0, h),
+              p3 = geo::addPoint(2, 0, 0, h), p4 = geo::addPoint(2, 1, 0, h),
+              p5 = geo::addPoint(1, 1, 0, h), p6 = geo::addPoint(0, 1, 0, h);
+    const int bottom_left = geo::addLine(p1, p2), bottom_right = geo::addLine(p2, p3),
+              right = geo::addLine(p3, p4), top_right = geo::addLine(p4, p5),
+              middle = geo::addLine(p5, p2), top_left = geo::addLine(p5, p6),
+              left = geo::addLine(p6, p1);
+    const int left_square =
+        geo::addPlaneSurface({geo::addCurveLoop({bottom_left, -middle, top_left, left})});
+    const int right_square =
+        geo::addPlaneSurface({geo::addCurveLoop({bottom_right, right, top_right, middle})});
+    geo::synchronize();
+    gmsh::model::mesh::setRecombine(2, right_square);
+    gmsh::model::addPhysicalGroup(2, {left_square, right_square});
+    gmsh::model::mesh::generate(2);
+    mesh = mesh_from_gmsh_model("mixed rectangle", 2);
+  }
+  ASSERT_TRUE(mesh.mixed());
+  EXPECT_EQ(cell_type_names(mesh), "tri3 + quad4");
+  EXPECT_NEAR(total_measure(mesh), 2.0, 1e-12);
+  // Conforming: the edges only one cell has are the rectangle's outline (a hanging node on the
+  // shared edge would add edges of the interface, each held once).
+  std::map<std::pair<Index, Index>, int> edges;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const auto nodes = mesh.cell_nodes(c);
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      const Index i = nodes[a], j = nodes[(a + 1) % nodes.size()];
+      ++edges[{std::min(i, j), std::max(i, j)}];
+    }
+  }
+  double outline = 0.0;
+  for (const auto& [edge, count] : edges) {
+    EXPECT_LE(count, 2);
+    if (count == 1) outline += (mesh.nodes[edge.first] - mesh.nodes[edge.second]).norm();
+  }
+  EXPECT_NEAR(outline, 6.0, 1e-12);
 }
 
 TEST(GmshImportTest, MixedTetrahedraAndHexahedra) {
