@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Distributed runs against one process (docs/performance.md, note 22; issue 44): the wall time of
+# a step of an elastic block under its own weight on 1 and on 2 processes (mpirun), one OpenMP
+# thread per process, the same direct solver (MUMPS through PETSc) on both, median of
+# GEOMPM_BENCH_REPETITIONS runs each. Writes bench/mpi_timings.md.
+#
+#   BUILD_DIR=build bench/mpi_scaling.sh
+#
+# Environment:
+#   BUILD_DIR                 the build with bin geompm (default: build)
+#   GEOMPM_BENCH_MPI_CELLS    2D cells per side (default 500: 10^6 points)
+#   GEOMPM_BENCH_MPI_CELLS_3D 3D cells per side (default 24: 1.1·10^5 points)
+#   GEOMPM_BENCH_REPETITIONS  runs per case (default 3)
+#   GEOMPM_BENCH_STEPS        steps per run (default 2: the second has points that moved)
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BUILD_DIR:-build}"
+[[ "$build" = /* ]] || build="$root/$build"
+geompm="$build/geompm"
+cells="${GEOMPM_BENCH_MPI_CELLS:-500}"
+cells3d="${GEOMPM_BENCH_MPI_CELLS_3D:-24}"
+repetitions="${GEOMPM_BENCH_REPETITIONS:-3}"
+steps="${GEOMPM_BENCH_STEPS:-2}"
+out="$root/bench/mpi_timings.md"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export OMP_WAIT_POLICY=passive OMP_NUM_THREADS=1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+# The block of bench/step_case.cpp: 10 m (2D square or 3D cube), the body all but the top layer
+# of cells, rollers on the sides, fixed base; `steps` quasi-static steps of ramped gravity.
+model() {  # dim cells file
+  local dim=$1 n=$2 file=$3 top
+  top=$(/usr/bin/python3 -c "print(10 - 10 / $n)")
+  if [[ $dim == 2 ]]; then
+    cat >"$file" <<YAML
+title: MPI scaling block 2D
+analysis: {kinematics: plane_strain}
+mesh: {generate: {cell: quad4, origin: [0, 0], x: {length: 10, cells: $n}, y: {length: 10, cells: $n}}}
+materials: {soil: {model: linear_elastic, E: 1.0e5, nu: 0.3, density: 2}}
+bodies: {block: {material: soil, region: {box: {min: [0, 0], max: [10, $top]}}, points_per_cell: 4}}
+YAML
+  else
+    cat >"$file" <<YAML
+title: MPI scaling block 3D
+analysis: {kinematics: 3d}
+mesh: {generate: {cell: hex8, origin: [0, 0, 0], x: {length: 10, cells: $n}, y: {length: 10, cells: $n}, z: {length: 10, cells: $n}}}
+materials: {soil: {model: linear_elastic, E: 1.0e5, nu: 0.3, density: 2}}
+bodies: {block: {material: soil, region: {box: {min: [0, 0, 0], max: [10, 10, $top]}}, points_per_cell: 8}}
+YAML
+  fi
+  local down="[0, -10]" sides="[left, right]"
+  [[ $dim == 3 ]] && down="[0, 0, -10]" && sides="[left, right, front, back]"
+  cat >>"$file" <<YAML
+phases:
+  - name: gravity
+    duration: $steps
+    time_step: 1
+    dynamics: quasi_static
+    gravity: {acceleration: $down, ramp: true}
+    fixities:
+YAML
+  for side in ${sides//[\[\],]/ }; do echo "      - {boundary: $side, fix: normal}" >>"$file"; done
+  cat >>"$file" <<YAML
+      - {boundary: bottom, fix: all}
+output: {vtk: {every: 0}, checkpoint: {every_steps: 0}}
+numerics: {linear_solver: petsc_mumps}
+YAML
+}
+
+# The run's stepping time (summary.json wall_seconds: from the first step to the end).
+run_once() {  # processes file
+  local processes=$1 file=$2 dir="$work/out"
+  rm -rf "$dir"
+  if [[ $processes == 1 ]]; then
+    "$geompm" run "$file" -o "$dir" --quiet >/dev/null
+  else
+    mpirun --oversubscribe -np "$processes" "$geompm" run "$file" -o "$dir" --quiet >/dev/null
+  fi
+  /usr/bin/python3 -c "import json; print(json.load(open('$dir/summary.json'))['wall_seconds'])"
+}
+
+median() { /usr/bin/python3 -c "import statistics, sys; print(statistics.median(map(float, sys.argv[1:])))" "$@"; }
+
+{
+  echo "| model | points | 1 process (s) | 2 processes (s) | speed-up |"
+  echo "|---|---|---|---|---|"
+} >"$work/table"
+for dim in 2 3; do
+  n=$cells
+  [[ $dim == 3 ]] && n=$cells3d
+  file="$work/block${dim}d.yaml"
+  model "$dim" "$n" "$file"
+  declare -A medians=()
+  for processes in 1 2; do
+    times=()
+    for ((k = 0; k < repetitions; ++k)); do times+=("$(run_once "$processes" "$file")"); done
+    medians[$processes]=$(median "${times[@]}")
+    echo "${dim}D ${n} cells/side, $processes process(es): ${times[*]} -> ${medians[$processes]} s" >&2
+  done
+  if [[ $dim == 2 ]]; then points=$((4 * n * (n - 1))); else points=$((8 * n * n * (n - 1))); fi
+  speedup=$(/usr/bin/python3 -c "print(f'{${medians[1]} / ${medians[2]}:.2f}')")
+  printf '| %dD block, %d cells per side, %d steps | %d | %.2f | %.2f | %s |\n' "$dim" "$n" "$steps" \
+    "$points" "${medians[1]}" "${medians[2]}" "$speedup" >>"$work/table"
+done
+{
+  echo "<!-- Written by bench/mpi_scaling.sh on $(date -u '+%Y-%m-%d %H:%M UTC'), geompm $(git -C "$root" rev-parse --short HEAD), load at end $(cut -d' ' -f1-3 /proc/loadavg); medians of $repetitions runs. -->"
+  cat "$work/table"
+} >"$out"
+cat "$out"
