@@ -64,7 +64,7 @@ YAML
   for side in ${sides//[\[\],]/ }; do echo "      - {boundary: $side, fix: normal}" >>"$file"; done
   cat >>"$file" <<YAML
       - {boundary: bottom, fix: all}
-output: {vtk: {every: 0}, checkpoint: {every_steps: 0}}
+output: {vtk: {every: 0}, checkpoint: {every_steps: 0, every_minutes: 0}}
 numerics: {linear_solver: petsc_mumps}
 YAML
 }
@@ -74,9 +74,9 @@ run_once() {  # processes file
   local processes=$1 file=$2 dir="$work/out"
   rm -rf "$dir"
   if [[ $processes == 1 ]]; then
-    "$geompm" run "$file" -o "$dir" --quiet >/dev/null
+    "$geompm" run "$file" -o "$dir" --quiet >/dev/null 2>&1
   else
-    mpirun --oversubscribe -np "$processes" "$geompm" run "$file" -o "$dir" --quiet >/dev/null
+    mpirun --oversubscribe -np "$processes" "$geompm" run "$file" -o "$dir" --quiet >/dev/null 2>&1
   fi
   /usr/bin/python3 -c "import json; print(json.load(open('$dir/summary.json'))['wall_seconds'])"
 }

@@ -87,7 +87,7 @@ class RankCounts(unittest.TestCase):
         self.assertEqual(done.returncode, 0, done.stderr)
         for processes in (1, 3):
             output = os.path.join(self.dir, f"resumed{processes}")
-            # Killed half-way through its third checkpoint: the second (step 10) is the last.
+            # Killed half-way through its third checkpoint: it resumes from the second.
             killed = run(model, output, 2, "--checkpoint-every", "5",
                          env={"GEOMPM_TEST_KILL_IN_CHECKPOINT": "3"})
             self.assertNotEqual(killed.returncode, 0)
