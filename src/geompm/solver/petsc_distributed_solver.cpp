@@ -4,6 +4,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "geompm/solver/petsc_session.hpp"
@@ -46,30 +47,42 @@ class PetscDistributedSolver final : public LinearSolver {
   void release();
   void number_rows(Index rows, const LinearSolverHints& hints);
   void collect_rows(const SparseMatrix& pattern);
-  void create_matrix(const SparseMatrix& pattern);
+  void create_matrix();
   void create_ksp(Index rows, const LinearSolverHints& hints);
+  void create_near_null_space();
+  void add_padding();
 
   Method requested_, method_ = Method::Mumps;
   LinearSolverOptions options_;
   int rank_ = 0, size_ = 1;
   // The PETSc numbering: the rows of process 0, then of process 1, ..., each in the step's
   // order. petsc_row_[free row] is its PETSc row; this process owns [first_, first_ + owned_).
+  // With nodal blocks (block_ > 1, every row a displacement) each node's block is complete, as
+  // in the serial PETSc solvers: a constrained component is a padding row, decoupled, with the
+  // mean diagonal, so that the matrix carries the block size AMG aggregates by.
   std::vector<PetscInt> petsc_row_, rows_of_process_;
-  std::vector<Index> own_rows_;  // the free rows this process owns, in PETSc order
-  PetscInt first_ = 0, owned_ = 0;
+  std::vector<Index> local_row_;         // per row this process owns: its free row, or -1 (padding)
+  std::vector<PetscInt> padding_;        // the padding rows this process owns
+  std::vector<Index> diagonal_entries_;  // the share's diagonal entries (value positions)
+  PetscInt first_ = 0, owned_ = 0, total_ = 0;
+  Index free_rows_ = 0;
+  int block_ = 1;
   // This process's share of the tangent by rows: for each row with entries, its PETSc row, the
   // range [entry_start_[k], entry_start_[k+1]) of its PETSc columns and value positions.
   std::vector<PetscInt> share_row_, entry_start_, entry_column_;
   std::vector<Index> entry_value_;
   std::vector<PetscScalar> values_;
+  const double* values_of_setup_ = nullptr;  // the share's values at the last setup
   Mat matrix_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr, x_all_ = nullptr;
+  MatNullSpace near_null_ = nullptr;
   VecScatter to_all_ = nullptr;
   KSP ksp_ = nullptr;
 };
 
 void PetscDistributedSolver::release() {
   KSPDestroy(&ksp_);
+  MatNullSpaceDestroy(&near_null_);
   VecScatterDestroy(&to_all_);
   VecDestroy(&x_all_);
   VecDestroy(&b_);
@@ -81,7 +94,7 @@ void PetscDistributedSolver::analyse(const SparseMatrix& pattern, const LinearSo
   release();
   number_rows(pattern.rows(), hints);
   collect_rows(pattern);
-  create_matrix(pattern);
+  create_matrix();
   create_ksp(pattern.rows(), hints);
 }
 
@@ -89,18 +102,40 @@ void PetscDistributedSolver::number_rows(Index rows, const LinearSolverHints& hi
   const auto owner = [&](Index row) {
     return hints.unknown_process.empty() ? 0 : hints.unknown_process[row];
   };
+  free_rows_ = rows;
+  const bool blocks = hints.block_size > 1 &&
+                      static_cast<Index>(hints.unknown_node.size()) == rows &&
+                      std::all_of(hints.unknown_node.begin(), hints.unknown_node.end(),
+                                  [](Index n) { return n >= 0; });
+  block_ = blocks ? hints.block_size : 1;
+  // A row's place: its own (block_ 1), or its node's block and component.
+  const Index places = blocks ? static_cast<Index>(hints.node_coordinates.size()) : rows;
+  std::vector<int> place_owner(places, -1);
+  for (Index r = 0; r < rows; ++r) place_owner[blocks ? hints.unknown_node[r] : r] = owner(r);
   rows_of_process_.assign(size_ + 1, 0);
-  for (Index r = 0; r < rows; ++r) ++rows_of_process_[owner(r) + 1];
+  for (Index n = 0; n < places; ++n)
+    if (place_owner[n] >= 0) rows_of_process_[place_owner[n] + 1] += block_;
   for (int p = 0; p < size_; ++p) rows_of_process_[p + 1] += rows_of_process_[p];
   std::vector<PetscInt> next(rows_of_process_.begin(), rows_of_process_.end() - 1);
-  petsc_row_.assign(rows, 0);
-  own_rows_.clear();
-  for (Index r = 0; r < rows; ++r) {
-    petsc_row_[r] = next[owner(r)]++;
-    if (owner(r) == rank_) own_rows_.push_back(r);
-  }
+  std::vector<PetscInt> place_row(places, -1);
+  for (Index n = 0; n < places; ++n)
+    if (place_owner[n] >= 0) {
+      place_row[n] = next[place_owner[n]];
+      next[place_owner[n]] += block_;
+    }
   first_ = rows_of_process_[rank_];
   owned_ = rows_of_process_[rank_ + 1] - first_;
+  total_ = rows_of_process_[size_];
+  petsc_row_.assign(rows, 0);
+  local_row_.assign(owned_, -1);
+  for (Index r = 0; r < rows; ++r) {
+    petsc_row_[r] =
+        blocks ? place_row[hints.unknown_node[r]] + hints.unknown_component[r] : place_row[r];
+    if (owner(r) == rank_) local_row_[petsc_row_[r] - first_] = r;
+  }
+  padding_.clear();
+  for (PetscInt k = 0; k < owned_; ++k)
+    if (local_row_[k] < 0) padding_.push_back(first_ + k);
 }
 
 // The share's entries row by row (Eigen's matrix is stored by columns).
@@ -110,6 +145,7 @@ void PetscDistributedSolver::collect_rows(const SparseMatrix& pattern) {
   for (Index k = 0; k < pattern.nonZeros(); ++k) ++count[pattern.innerIndexPtr()[k] + 1];
   for (Index r = 0; r < rows; ++r) count[r + 1] += count[r];
   entry_column_.assign(pattern.nonZeros(), 0);
+  diagonal_entries_.clear();
   entry_value_.assign(pattern.nonZeros(), 0);
   std::vector<PetscInt> at(count.begin(), count.end() - 1);
   for (Index c = 0; c < pattern.cols(); ++c)
@@ -117,6 +153,7 @@ void PetscDistributedSolver::collect_rows(const SparseMatrix& pattern) {
       const Index r = pattern.innerIndexPtr()[k];
       entry_column_[at[r]] = petsc_row_[c];
       entry_value_[at[r]++] = k;
+      if (r == c) diagonal_entries_.push_back(k);
     }
   // A row without entries adds nothing to the counts: the kept rows' ranges are contiguous.
   share_row_.clear();
@@ -132,8 +169,8 @@ void PetscDistributedSolver::collect_rows(const SparseMatrix& pattern) {
 // Preallocation: each process counts its share's entries per row in the owner's diagonal block
 // and outside it; the owners get the sums (an upper bound where shares overlap, on the rows of
 // nodes between processes).
-void PetscDistributedSolver::create_matrix(const SparseMatrix& pattern) {
-  const PetscInt rows = static_cast<PetscInt>(pattern.rows());
+void PetscDistributedSolver::create_matrix() {
+  const PetscInt rows = total_;
   std::vector<PetscInt> diagonal(rows, 0), off(rows, 0);
   std::vector<int> owner_of(rows);
   for (int p = 0; p < size_; ++p)
@@ -158,13 +195,17 @@ void PetscDistributedSolver::create_matrix(const SparseMatrix& pattern) {
   check(MPI_Reduce_scatter(off.data(), o_nnz.data(), counts.data(), MPIU_INT, MPI_SUM,
                            PETSC_COMM_WORLD),
         "MPI_Reduce_scatter");
+  for (const PetscInt pad : padding_) ++d_nnz[pad - first_];
   for (PetscInt r = 0; r < owned_; ++r) {
     d_nnz[r] = std::min(d_nnz[r], owned_);
     o_nnz[r] = std::min(o_nnz[r], rows - owned_);
   }
-  check(MatCreateAIJ(PETSC_COMM_WORLD, owned_, owned_, rows, rows, 0, d_nnz.data(), 0, o_nnz.data(),
-                     &matrix_),
-        "MatCreateAIJ");
+  check(MatCreate(PETSC_COMM_WORLD, &matrix_), "MatCreate");
+  check(MatSetSizes(matrix_, owned_, owned_, rows, rows), "MatSetSizes");
+  check(MatSetBlockSize(matrix_, block_), "MatSetBlockSize");
+  check(MatSetType(matrix_, MATMPIAIJ), "MatSetType");
+  check(MatMPIAIJSetPreallocation(matrix_, 0, d_nnz.data(), 0, o_nnz.data()),
+        "MatMPIAIJSetPreallocation");
   check(MatSetOption(matrix_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE), "MatSetOption");
   // Every setup of the step sends the same off-process entries.
   check(MatSetOption(matrix_, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE), "MatSetOption");
@@ -195,12 +236,45 @@ void PetscDistributedSolver::create_ksp(Index rows, const LinearSolverHints& hin
     } else {
       check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
       petsc::set_default("-mg_levels_pc_type", "sor");
+      create_near_null_space();
     }
   }
   check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
 }
 
+// The translations of the nodal blocks, as the serial GAMG takes them (petsc_solver.cpp: with
+// the rotations its coarse levels broke).
+void PetscDistributedSolver::create_near_null_space() {
+  if (block_ < 2) return;
+  std::vector<Vec> modes(block_);
+  for (int c = 0; c < block_; ++c) {
+    check(MatCreateVecs(matrix_, &modes[c], nullptr), "MatCreateVecs");
+    PetscScalar* v = nullptr;
+    check(VecGetArrayWrite(modes[c], &v), "VecGetArrayWrite");
+    for (PetscInt k = 0; k < owned_; ++k) v[k] = k % block_ == c ? 1.0 : 0.0;
+    check(VecRestoreArrayWrite(modes[c], &v), "VecRestoreArrayWrite");
+    check(VecNormalize(modes[c], nullptr), "VecNormalize");
+  }
+  check(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, block_, modes.data(), &near_null_),
+        "MatNullSpaceCreate");
+  for (Vec& v : modes) VecDestroy(&v);
+  check(MatSetNearNullSpace(matrix_, near_null_), "MatSetNearNullSpace");
+}
+
+// The padding rows' diagonal: the mean of the free rows' (summed over the processes' shares).
+void PetscDistributedSolver::add_padding() {
+  double sum = 0.0;
+  for (const Index k : diagonal_entries_) sum += values_of_setup_[k];
+  check(MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD),
+        "MPI_Allreduce");
+  const double mean = free_rows_ > 0 ? std::abs(sum) / static_cast<double>(free_rows_) : 0.0;
+  const PetscScalar value = mean > 0.0 ? mean : 1.0;
+  for (const PetscInt pad : padding_)
+    check(MatSetValues(matrix_, 1, &pad, 1, &pad, &value, ADD_VALUES), "MatSetValues");
+}
+
 void PetscDistributedSolver::setup(const SparseMatrix& matrix) {
+  values_of_setup_ = matrix.valuePtr();
   check(MatZeroEntries(matrix_), "MatZeroEntries");
   const double* values = matrix.valuePtr();
   for (std::size_t e = 0; e < entry_value_.size(); ++e) values_[e] = values[entry_value_[e]];
@@ -210,6 +284,7 @@ void PetscDistributedSolver::setup(const SparseMatrix& matrix) {
                        entry_column_.data() + begin, values_.data() + begin, ADD_VALUES),
           "MatSetValues");
   }
+  add_padding();
   check(MatAssemblyBegin(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
@@ -226,7 +301,7 @@ void PetscDistributedSolver::setup(const SparseMatrix& matrix) {
 int PetscDistributedSolver::solve(const Vector& b, Vector& x, double relative_tolerance) {
   PetscScalar* own = nullptr;
   check(VecGetArrayWrite(b_, &own), "VecGetArrayWrite");
-  for (PetscInt k = 0; k < owned_; ++k) own[k] = b(own_rows_[k]);
+  for (PetscInt k = 0; k < owned_; ++k) own[k] = local_row_[k] >= 0 ? b(local_row_[k]) : 0.0;
   check(VecRestoreArrayWrite(b_, &own), "VecRestoreArrayWrite");
   if (method_ != Method::Mumps)
     check(KSPSetTolerances(ksp_, relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT,
