@@ -27,6 +27,8 @@ EXAMPLES = [
     "column/column_3d.yaml",  # standard MPM, 3D hexahedra
     "earth_pressure/rankine_active.yaml",  # Mohr-Coulomb, K0 procedure, grid motion
     "vibrating_bar/vibrating_bar.yaml",  # dynamic (Newmark), points cross cells
+    "oedometer/oedometer.yaml",  # prescribed point motion and its reaction
+    "mohr_coulomb_footing/mohr_coulomb_footing.yaml",  # a plastic footing driven through its points
 ]
 
 
@@ -109,9 +111,10 @@ class RankCounts(unittest.TestCase):
             self.assert_same_history(whole, output, f"resumed on {processes} processes")
 
     def test_a_feature_not_distributed_is_refused(self):
-        done = run("oedometer/oedometer.yaml", os.path.join(self.dir, "refused"), 2)
+        done = run("strip_footing/strip_footing.yaml", os.path.join(self.dir, "refused"), 2)
         self.assertEqual(done.returncode, 2, done.stderr)
-        self.assertIn("prescribed point motions (prescribed_motion)", done.stderr)
+        self.assertIn("the mixed p-u formulation (formulation: mixed)", done.stderr)
+        self.assertIn("strip_footing.yaml", done.stderr)
         self.assertIn("does not handle yet", done.stderr)
 
 

@@ -19,10 +19,6 @@ void check_distributable(const Model& model, int processes) {
   };
   if (any_phase([](const spec::Phase& p) { return !p.surface_loads.empty(); }))
     features.push_back("surface loads (surface_loads)");
-  if (any_phase([](const spec::Phase& p) { return !p.motions.empty(); }))
-    features.push_back("prescribed point motions (prescribed_motion)");
-  if (any_phase([](const spec::Phase& p) { return !p.loads.empty(); }))
-    features.push_back("point-set loads (loads)");
   if (any_phase([](const spec::Phase& p) { return p.newton.tangent_check > 0.0; }))
     features.push_back("the tangent check (newton.tangent_check)");
   const bool mixed = spec.numerics.formulation == spec::Formulation::Mixed ||

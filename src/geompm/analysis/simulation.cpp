@@ -319,7 +319,10 @@ void Simulation::checkpoint_if_due(bool phase_done) {
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
-  const std::string unfollowed = unfollowed_motions(model_, *phase_);
+  // From every process's points (gathered on rank 0), and the verdict shared by all.
+  std::string unfollowed;
+  with_all_points([&] { unfollowed = unfollowed_motions(model_, *phase_); });
+  if (processes_.distributed()) unfollowed = processes_.all_gather(unfollowed).front();
   if (unfollowed.empty()) return;
   stop(fmt::format(
       "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "

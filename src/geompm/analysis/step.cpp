@@ -88,7 +88,7 @@ class LagrangianProblem final : public NonlinearProblem {
     if (inertia_) force_scale = std::max(force_scale, inertia_->momentum_rate());
     // And the forces a prescribed point motion would take in the body's own stiffness: a body
     // driven through a rigid motion has nothing else but round-off.
-    if (springs_) force_scale = std::max(force_scale, springs_->driving_force_scale());
+    if (springs_) force_scale = std::max(force_scale, driving_force_scale());
     return true;
   }
 
@@ -125,6 +125,12 @@ class LagrangianProblem final : public NonlinearProblem {
   }
 
   const SystemForces& forces() const { return forces_; }
+  /// The prescribed motions' force scale, over every process's driven points.
+  double driving_force_scale() const {
+    const double own = springs_->driving_force_scale();
+    const Communicator& processes = system_.communicator();
+    return processes.distributed() ? std::sqrt(processes.sum(own * own)) : own;
+  }
   /// The unknown with the largest out-of-balance force at the last admissible evaluation (-1 if
   /// the last evaluation was inadmissible), and that force.
   Index largest_residual_unknown() const override { return largest_dof_; }

@@ -42,6 +42,9 @@ bool StepSystem::evaluate(const Vector& du, SystemForces& forces, bool with_tang
 
 void StepSystem::report(const Vector& du, Reactions& reactions) {
   for (const auto& c : contributions_) c->report(du, reactions);
+  // The point sets' reactions are sums over the points (the same sets on every process).
+  if (communicator_.distributed())
+    for (auto& [set, force] : reactions.point_sets) communicator_.sum(force.data(), 3);
 }
 
 void StepSystem::commit() {
