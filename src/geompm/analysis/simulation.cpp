@@ -319,6 +319,7 @@ void Simulation::checkpoint_if_due(bool phase_done) {
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
+  if (phase_->motions.empty()) return;
   // From every process's points (gathered on rank 0), and the verdict shared by all.
   std::string unfollowed;
   with_all_points([&] { unfollowed = unfollowed_motions(model_, *phase_); });
