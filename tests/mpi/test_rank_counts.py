@@ -25,6 +25,7 @@ TOLERANCE = 1e-6
 EXAMPLES = [
     "column/column.yaml",  # GIMP, quasi-static, elastic, 2D
     "column/column_3d.yaml",  # standard MPM, 3D hexahedra
+    "column/column_large_deformation.yaml",  # points cross cells and the parts' boundaries
     "earth_pressure/rankine_active.yaml",  # Mohr-Coulomb, K0 procedure, grid motion
     "vibrating_bar/vibrating_bar.yaml",  # dynamic (Newmark), points cross cells
     "oedometer/oedometer.yaml",  # prescribed point motion and its reaction
