@@ -88,7 +88,16 @@ int run_command(const RunCommand& command) {
   std::ifstream in(command.model_file, std::ios::binary);
   options.model_hash = geompm::fnv1a_64(
       std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-  geompm::run_analysis(*model, options);
+  try {
+    geompm::run_analysis(*model, options);
+  } catch (const geompm::InputError&) {
+    // Every process of a distributed run meets these together: rank 0 says it, once.
+    if (!first) return 2;
+    throw;
+  } catch (const geompm::RunError&) {
+    if (!first) return 3;
+    throw;
+  }
   return 0;
 }
 
