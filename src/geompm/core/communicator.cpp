@@ -21,9 +21,11 @@ class SerialCommunicator final : public Communicator {
   void barrier() const override {}
 };
 
-// The process count a launcher announces: Open MPI's mpirun, MPICH's and Slurm's PMI, PMIx.
+// The process count a launcher announces: Open MPI's mpirun, MPICH's and Slurm's PMI, srun's
+// job step (set for the tasks it starts, whatever MPI plug-in carries them).
 int launched_size() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"})
+  for (const char* name :
+       {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS", "MPI_LOCALNRANKS"})
     if (const char* value = std::getenv(name)) return std::atoi(value);
   return 1;
 }
