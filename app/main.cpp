@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@
 #include "geompm/mesh/cell_type.hpp"
 #include "geompm/mesh/gmsh_generate.hpp"
 #include "geompm/solver/linear_solver.hpp"
+#include "geompm/solver/petsc_communicator.hpp"
 
 namespace {
 
@@ -63,21 +65,39 @@ int run_command(const RunCommand& command) {
   auto spec = geompm::read_model(command.model_file);
   override_linear_solver(command, spec.numerics);
   auto model = geompm::build_model(spec);
+  // Under mpirun/srun with several processes: a distributed run (docs/user-guide.md, "Running on
+  // several processes"); MPI is started only then. Process 0 writes the files and the log.
+  std::unique_ptr<geompm::Communicator> processes;
+  if (geompm::launched_with_several_processes())
+    processes = geompm::mpi_world_communicator(spec.numerics.petsc_options);
+  const bool first = !processes || processes->rank() == 0;
   std::string output = command.output;
   if (output.empty())
     output = std::filesystem::path(command.model_file).stem().string() + "_results";
-  if (!command.quiet) std::cerr << geompm::describe_model(*model);
+  if (!command.quiet && first) std::cerr << geompm::describe_model(*model);
+  if (!command.quiet && first && processes)
+    std::cerr << fmt::format("distributed run on {} processes\n", processes->size());
   geompm::RunOptions options;
+  options.communicator = processes.get();
   options.output_dir = output;
   options.progress = !command.quiet;
-  options.log = &std::cerr;
+  options.log = first ? &std::cerr : nullptr;
   options.resume = command.resume;
   options.checkpoint_every = command.checkpoint_every;
   // The text read_model has just read: a checkpoint is only resumed with the same model.
   std::ifstream in(command.model_file, std::ios::binary);
   options.model_hash = geompm::fnv1a_64(
       std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-  geompm::run_analysis(*model, options);
+  try {
+    geompm::run_analysis(*model, options);
+  } catch (const geompm::InputError&) {
+    // Every process of a distributed run meets these together: rank 0 says it, once.
+    if (!first) return 2;
+    throw;
+  } catch (const geompm::RunError&) {
+    if (!first) return 3;
+    throw;
+  }
   return 0;
 }
 

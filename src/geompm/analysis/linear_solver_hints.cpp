@@ -2,12 +2,14 @@
 
 namespace geompm {
 
-LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3>& nodes) {
+LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3>& nodes,
+                                      const std::vector<int>& node_process) {
   LinearSolverHints hints;
   // Finite strain, non-associated flow, F-bar and friction make the tangent unsymmetric.
   hints.symmetric = false;
   hints.unknown_node.assign(dofs.num_free(), -1);
   hints.unknown_component.assign(dofs.num_free(), -1);
+  if (!node_process.empty()) hints.unknown_process.assign(dofs.num_free(), 0);
   bool displacement_seen = false;
   for (int f = 0; f < dofs.num_fields(); ++f) {
     const Field& field = dofs.field(f);
@@ -28,6 +30,8 @@ LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3
         const Index row = dofs.free_index(dofs.dof(f, e, c));
         if (row < 0) continue;  // constrained: not in the matrix
         split.unknowns.push_back(row);
+        if (!node_process.empty() && field.nodal)
+          hints.unknown_process[row] = node_process[dofs.active_nodes()[e]];
         if (blocks) {
           hints.unknown_node[row] = e;
           hints.unknown_component[row] = c;

@@ -15,6 +15,9 @@ namespace geompm {
 /// field per field of the map, with its free rows; the block size, node positions and each row's
 /// node and component from the (nodal) displacement field, dim per active node. `nodes`: the
 /// mesh's node positions.
-LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3>& nodes);
+/// `node_process`: in a distributed run, per mesh node the process that owns it (partition.hpp),
+/// which then owns the node's unknowns; empty in a serial run.
+LinearSolverHints linear_solver_hints(const DofMap& dofs, const std::vector<Vec3>& nodes,
+                                      const std::vector<int>& node_process = {});
 
 }  // namespace geompm

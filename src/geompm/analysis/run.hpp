@@ -12,6 +12,7 @@
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run_summary.hpp"
+#include "geompm/core/communicator.hpp"
 
 namespace geompm {
 
@@ -27,6 +28,9 @@ struct RunOptions {
   /// FNV-1a 64 of the model file's text: recorded in checkpoints and summary.json; a checkpoint
   /// of another model is refused.
   std::uint64_t model_hash = 0;
+  /// The processes of a distributed run (mpirun -np N; docs/architecture.md, "Distributed
+  /// runs"); null for a run on one process. Only process 0 writes files.
+  const Communicator* communicator = nullptr;
 };
 
 /// Runs every phase (or, with options.resume, what is left of them after the checkpoint). Throws

@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/motion_check.hpp"
 #include "geompm/analysis/output_folder.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/interrupt.hpp"
 #include "geompm/io/checkpoint_file.hpp"
 #include "geompm/io/output_directory.hpp"
+#include "geompm/points/point_exchange.hpp"
+#include "geompm/solver/petsc_distributed_solver.hpp"
 
 namespace geompm {
 
@@ -27,6 +30,18 @@ int kill_in_checkpoint() {
   return value ? std::atoi(value) : 0;
 }
 
+// The serial solver the model names, or in a distributed run its distributed stand-in (after
+// the model is checked for what a distributed run does not handle yet).
+std::unique_ptr<LinearSolver> make_linear_solver(const Model& model,
+                                                 const Communicator& processes) {
+  const LinearSolverOptions options{model.spec.numerics.petsc_options,
+                                    model.spec.numerics.direct_limit};
+  if (!processes.distributed())
+    return create_linear_solver(model.spec.numerics.linear_solver, options);
+  check_distributable(model, processes.size());
+  return create_petsc_distributed_solver(model.spec.numerics.linear_solver, options);
+}
+
 }  // namespace
 
 std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir) {
@@ -40,9 +55,8 @@ StepControlSettings step_control_settings(const spec::TimeStepping& ts) {
 Simulation::Simulation(Model& model, const RunOptions& options)
     : model_(model),
       options_(options),
-      solver_(create_linear_solver(
-          model.spec.numerics.linear_solver,
-          {model.spec.numerics.petsc_options, model.spec.numerics.direct_limit})),
+      processes_(options.communicator ? *options.communicator : serial_communicator()),
+      solver_(make_linear_solver(model, processes_)),
       stepper_(model, *solver_),
       progress_(options.log, options.progress),
       started_(Clock::now()),
@@ -57,7 +71,37 @@ Simulation::Simulation(Model& model, const RunOptions& options)
 
 Simulation::~Simulation() = default;
 
+template <class Write>
+void Simulation::with_all_points(Write&& write) const {
+  if (!processes_.distributed()) {
+    write();
+    return;
+  }
+  MaterialPoints all = gather_points(model_.points, processes_);
+  if (!writes_files()) return;
+  std::swap(model_.points, all);
+  try {
+    write();
+  } catch (...) {
+    std::swap(model_.points, all);
+    throw;
+  }
+  std::swap(model_.points, all);
+}
+
+void Simulation::distribute_points() {
+  if (!processes_.distributed()) return;
+  std::vector<int> cell_part = partition_by_points(model_, processes_.size());
+  keep_own_points(model_.points, cell_part, processes_.rank());
+  stepper_.distribute(processes_, std::move(cell_part));
+}
+
 void Simulation::start() {
+  // Every process holds every point until they are shared out, after the initial output.
+  if (!writes_files()) {
+    distribute_points();
+    return;
+  }
   // What an earlier run in the same directory left must not be mistaken for this run's: its
   // checkpoint (a later --resume would go back to it), its summary, ParaView files, plots and
   // history, a half-written checkpoint, the temporaries of files being written when it was killed.
@@ -75,6 +119,7 @@ void Simulation::start() {
   output_ = std::make_unique<OutputWriter>(model_, options_.output_dir);
   output_->initial();
   summary_.history_file = output_->history_file();
+  distribute_points();
 }
 
 void Simulation::resume() {
@@ -86,6 +131,9 @@ void Simulation::resume() {
         "to start again",
         checkpoint.string()));
   load(checkpoint);
+  // Whatever rank count wrote it: the checkpoint holds every point; the cut is made anew.
+  distribute_points();
+  if (!writes_files()) return;
   // A half-written checkpoint of the run that stopped is of no use (the one just read is), nor
   // are the temporaries of the files it was writing when it was killed.
   std::filesystem::remove(checkpoint_temporary(checkpoint));
@@ -127,10 +175,12 @@ void Simulation::begin_phase() {
 // when that cannot go on; write and count a converged one.
 void Simulation::run_phase() {
   while (!control_->finished()) {
-    if (interrupt_requested()) stop_on_interrupt();
+    // A signal reaches the processes at different moments: they stop together, when any has it.
+    if (processes_.distributed() ? !processes_.all(!interrupt_requested()) : interrupt_requested())
+      stop_on_interrupt();
     const double t = control_->time(), dt = control_->trial_step();
     const StepResult step = stepper_.advance(*phase_, t, dt);
-    output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
+    if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
     if (!step.converged) {
       cut_back(step, t, dt);
       continue;
@@ -159,7 +209,7 @@ void Simulation::cut_back(const StepResult& step, double t, double dt) {
 void Simulation::check_lost_points(const StepResult& step, double t) {
   const spec::Phase& spec = *phase_->spec;
   // A model with an FEM region may have no material points at all (every cell FEM).
-  if (model_.points.size() == 0 && !model_.fem)
+  if (processes_.sum(model_.points.size()) == 0 && !model_.fem)
     stop(
         fmt::format("phase '{}', time {:g}: every material point has left the mesh; results "
                     "up to time {:g} are in {}",
@@ -225,7 +275,14 @@ void Simulation::accept(const StepResult& step, double dt) {
   const bool phase_done = control_->finished();
   const int vtk_every = model_.spec.output.vtk_every;
   const bool vtk = vtk_every > 0 && (step_number_ % vtk_every == 0 || phase_done);
-  output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk);
+  // A distributed run gathers the points only for the output that reads them.
+  const auto write_step = [&] {
+    output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk);
+  };
+  if (vtk || !model_.spec.output.histories.empty())
+    with_all_points(write_step);
+  else if (output_)
+    write_step();
   update_clocks();
 
   double total_duration = 0.0;
@@ -256,13 +313,17 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   const bool due = phase_done || (every_steps > 0 && step_number_ % every_steps == 0) ||
                    (every_minutes > 0 && seconds_since(last_checkpoint_) >= 60 * every_minutes);
   if (!due) return;
-  save(checkpoint_file(options_.output_dir));
+  with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
   last_checkpoint_ = Clock::now();
 }
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
-  const std::string unfollowed = unfollowed_motions(model_, *phase_);
+  if (phase_->motions.empty()) return;
+  // From every process's points (gathered on rank 0), and the verdict shared by all.
+  std::string unfollowed;
+  with_all_points([&] { unfollowed = unfollowed_motions(model_, *phase_); });
+  if (processes_.distributed()) unfollowed = processes_.all_gather(unfollowed).front();
   if (unfollowed.empty()) return;
   stop(fmt::format(
       "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "
@@ -279,7 +340,7 @@ void Simulation::stop_on_interrupt() {
   const spec::Checkpoint& schedule = model_.spec.output.checkpoint;
   const bool checkpoints =
       options_.checkpoint_every.value_or(schedule.every_steps) > 0 || schedule.every_minutes > 0;
-  if (checkpoints) save(checkpoint_file(options_.output_dir));
+  if (checkpoints) with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
   stop(fmt::format(
       "interrupted ({}) in phase '{}' after step {}; results up to time {:g} are in "
       "{}{}",
@@ -310,6 +371,13 @@ void Simulation::finish(const std::string& stop_reason) {
   summary_.wall_seconds = wall_before_ + seconds_since(started_);
   summary_.lost_mass = model_.lost_mass;
   summary_.lost_points = model_.lost_points;
+  // Where the run stopped, unless its last step was written (collective: every process's points).
+  if (!stop_reason.empty()) try {
+      with_all_points([&] {
+        if (output_) output_->last_state(time_, step_number_);
+      });
+    } catch (const std::exception&) {
+    }
   if (output_) {
     summary_.history_columns = output_->columns();
     summary_.history_last = output_->last_values();
@@ -320,16 +388,12 @@ void Simulation::finish(const std::string& stop_reason) {
       // What stopped the run (a full disk) may keep these from being written: the stop's
       // message matters more.
       try {
-        output_->last_state(time_, step_number_);
-      } catch (const std::exception&) {
-      }
-      try {
         output_->plots();
       } catch (const std::exception&) {
       }
     }
   }
-  write_summary_json(options_.output_dir / "summary.json", summary_);
+  if (writes_files()) write_summary_json(options_.output_dir / "summary.json", summary_);
 }
 
 }  // namespace geompm

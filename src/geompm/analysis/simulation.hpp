@@ -61,9 +61,18 @@ class Simulation {
   [[noreturn]] void stop_on_interrupt();
   void update_clocks();
   [[noreturn]] void stop(const std::string& message);
+  /// Distributed: cuts the mesh by the points every process holds now and keeps this process's.
+  void distribute_points();
+  /// Runs `write` on process 0 with every process's points in the model (gathered there, then
+  /// given back): the output and checkpoints are written as a serial run writes them. Collective.
+  template <class Write>
+  void with_all_points(Write&& write) const;
+  /// Whether this process writes files (process 0).
+  bool writes_files() const { return processes_.rank() == 0; }
 
   Model& model_;
   RunOptions options_;
+  const Communicator& processes_;
   std::unique_ptr<LinearSolver> solver_;
   StepSolver stepper_;
   ProgressLine progress_;

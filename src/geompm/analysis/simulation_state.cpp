@@ -121,7 +121,7 @@ void Simulation::load(const std::filesystem::path& file) {
   structures.expect_end();
 
   ByteReader output = contents.section("output");
-  output_ = std::make_unique<OutputWriter>(model_, options_.output_dir, output);
+  if (writes_files()) output_ = std::make_unique<OutputWriter>(model_, options_.output_dir, output);
 }
 
 }  // namespace geompm

@@ -8,10 +8,13 @@
 
 #include "geompm/analysis/linear_solver_hints.hpp"
 #include "geompm/analysis/step_contributions.hpp"
+#include "geompm/core/byte_archive.hpp"
+#include "geompm/mesh/partition.hpp"
 #include "geompm/physics/inertia.hpp"
 #include "geompm/physics/newmark.hpp"
 #include "geompm/physics/point_integrator.hpp"
 #include "geompm/physics/point_springs.hpp"
+#include "geompm/points/point_exchange.hpp"
 
 namespace geompm {
 
@@ -85,7 +88,7 @@ class LagrangianProblem final : public NonlinearProblem {
     if (inertia_) force_scale = std::max(force_scale, inertia_->momentum_rate());
     // And the forces a prescribed point motion would take in the body's own stiffness: a body
     // driven through a rigid motion has nothing else but round-off.
-    if (springs_) force_scale = std::max(force_scale, springs_->driving_force_scale());
+    if (springs_) force_scale = std::max(force_scale, driving_force_scale());
     return true;
   }
 
@@ -111,10 +114,23 @@ class LagrangianProblem final : public NonlinearProblem {
       if (set.changed >= 0) set.changed += plastic[p] != last_plastic_[p];
     }
     last_plastic_ = plastic;
+    if (const Communicator& processes = system_.communicator(); processes.distributed()) {
+      std::vector<double> counts = {double(set.size), set.changed < 0 ? 1.0 : 0.0,
+                                    double(std::max<Index>(set.changed, 0))};
+      processes.sum(counts);
+      set.size = static_cast<Index>(counts[0]);
+      set.changed = counts[1] > 0 ? -1 : static_cast<Index>(counts[2]);
+    }
     return set;
   }
 
   const SystemForces& forces() const { return forces_; }
+  /// The prescribed motions' force scale, over every process's driven points.
+  double driving_force_scale() const {
+    const double own = springs_->driving_force_scale();
+    const Communicator& processes = system_.communicator();
+    return processes.distributed() ? std::sqrt(processes.sum(own * own)) : own;
+  }
   /// The unknown with the largest out-of-balance force at the last admissible evaluation (-1 if
   /// the last evaluation was inadmissible), and that force.
   Index largest_residual_unknown() const override { return largest_dof_; }
@@ -193,6 +209,11 @@ StepSolver::StepSolver(Model& model, LinearSolver& solver)
       solver_(solver),
       grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {
   if (model.fem) relaxation_ = std::make_unique<MeshRelaxation>(model.mesh, *model.fem);
+}
+
+void StepSolver::distribute(const Communicator& communicator, std::vector<int> cell_part) {
+  node_part_ = node_owners(model_.mesh, cell_part);
+  grid_.distribute(communicator, std::move(cell_part));
 }
 
 // What a step carries from its set-up to its end.
@@ -407,7 +428,7 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepRes
   // The step's pattern and unknowns, for the linear solver; a retry analyses again, as a direct
   // solver's symbolic analysis takes the values of the first matrix after it (UMFPACK's).
   SparseMatrix& tangent = system_->tangent();
-  const LinearSolverHints hints = linear_solver_hints(dofs, model_.mesh.nodes);
+  const LinearSolverHints hints = linear_solver_hints(dofs, model_.mesh.nodes, node_part_);
   solver_.analyse(tangent, hints);
   result.newton = solve_newton(problem, solver_, first, x, tangent);
   if (extrapolated && !result.newton.converged) {
@@ -513,6 +534,7 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
   }
   for (Index p = 0; p < n; ++p)
     if (lost[p]) result.lost.emplace_back(points.id[p], destination[p]);
+  share_lost_points(result, lost);
   if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Stop) {
     if (model_.fem) {
       model_.mesh.nodes = unmoved;
@@ -533,12 +555,40 @@ void StepSolver::convect_and_relocate(StepResult& result, double dt, bool dynami
       points.local[p] = found[p].xi;
     }
   if (!result.lost.empty()) {
-    for (Index p = 0; p < n; ++p)
-      if (lost[p]) {
-        model_.lost_mass += points.mass[p];
-        ++model_.lost_points;
-      }
+    if (!grid_.communicator().distributed())
+      for (Index p = 0; p < n; ++p)
+        if (lost[p]) {
+          model_.lost_mass += points.mass[p];
+          ++model_.lost_points;
+        }
     points.remove(lost);
+  }
+  // Points that crossed into another process's cell go to it.
+  if (grid_.communicator().distributed())
+    migrate_points(points, grid_.cell_part(), grid_.communicator());
+}
+
+void StepSolver::share_lost_points(StepResult& result, const std::vector<char>& lost) const {
+  const Communicator& processes = grid_.communicator();
+  if (!processes.distributed()) return;
+  ByteWriter mine;
+  double mass = 0.0;
+  for (std::size_t p = 0; p < lost.size(); ++p)
+    if (lost[p]) mass += model_.points.mass[p];
+  mine.put(result.lost);
+  mine.put(mass);
+  result.lost.clear();
+  double lost_mass = 0.0;
+  for (const std::string& part : processes.all_gather(mine.take())) {
+    ByteReader in(part, "lost points of another process");
+    const auto theirs = in.get<std::vector<std::pair<Index, Vec3>>>();
+    result.lost.insert(result.lost.end(), theirs.begin(), theirs.end());
+    lost_mass += in.get<double>();
+  }
+  // Whether they are removed is the policy's: counted where the serial run counts them.
+  if (!result.lost.empty() && model_.spec.numerics.lost_points == spec::LostPointPolicy::Remove) {
+    model_.lost_mass += lost_mass;
+    model_.lost_points += static_cast<Index>(result.lost.size());
   }
 }
 

@@ -75,6 +75,11 @@ class StepSolver {
   /// "stop" the points are NOT updated and the caller stops the run).
   StepResult advance(PhaseContext& phase, double t0, double dt);
 
+  /// A distributed run: this process holds the points of the cells `cell_part` gives it
+  /// (docs/architecture.md, "Distributed runs"); points that cross into another process's cell
+  /// are sent to it after each step.
+  void distribute(const Communicator& communicator, std::vector<int> cell_part);
+
   GridSystem& grid() { return grid_; }
   PressureField& pressure() { return pressure_; }
   const PressureField& pressure() const { return pressure_; }
@@ -107,6 +112,9 @@ class StepSolver {
   bool extrapolated_start(double dt, Vector& x) const;
   void remember_increment(const Vector& du, double dt);
   void convect_and_relocate(StepResult& result, double dt, bool dynamic);
+  /// Distributed: every process's lost points in result.lost, so that all take the same
+  /// decision; the model's lost mass counts them all.
+  void share_lost_points(StepResult& result, const std::vector<char>& lost) const;
   void commit_motions(PhaseContext& phase, const Step& step);
   /// With an FEM region: moves its nodes by the converged increment, relaxes the MPM region's
   /// and finds the points' cells anew in the moved mesh (docs/theory.md §19.3). Returns the
@@ -119,6 +127,7 @@ class StepSolver {
   PressureField pressure_;
   std::unique_ptr<StepSystem> system_;          // the last step's equations
   std::unique_ptr<MeshRelaxation> relaxation_;  // with an FEM region
+  std::vector<int> node_part_;  // distributed: per mesh node, the process owning its unknowns
   // The last converged step's increment per unit time, per mesh node and unknown (dim
   // displacements, then the pressure): Newton's first iterate with `predictor: extrapolated`.
   std::vector<double> last_rate_;

@@ -15,6 +15,10 @@ BodyLoads::BodyLoads(const GridSystem& grid, const MaterialPoints& points, const
         set_mass[k] += points.mass[p];
         set_volume[k] += points.volume[p];
       }
+  if (grid.communicator().distributed()) {  // the sets' points on every process
+    grid.communicator().sum(set_mass);
+    grid.communicator().sum(set_volume);
+  }
   for (Index p = 0; p < n_points; ++p) {
     Vec3 force = points.mass[p] * gravity;
     for (std::size_t k = 0; k < forces.size(); ++k)

@@ -21,6 +21,7 @@ class BodyLoads final : public Contribution {
   BodyLoads(const GridSystem& grid, const MaterialPoints& points, const DofMap& dofs,
             const Vec3& gravity, const std::vector<PointSetForce>& forces);
   const char* name() const override { return "gravity and point loads"; }
+  bool sums_own_points() const override { return true; }
   bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
   /// f_ext per unknown.
   const Vector& force() const { return f_ext_; }

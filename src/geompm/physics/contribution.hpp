@@ -45,6 +45,10 @@ class Contribution {
   virtual ~Contribution() = default;
   virtual const char* name() const = 0;
 
+  /// Whether its forces are a sum over the material points this process holds, which a
+  /// distributed run sums over the processes (docs/architecture.md, "Distributed runs"); the
+  /// terms of the grid alone, which every process holds whole, are added by process 0 only.
+  virtual bool sums_own_points() const { return false; }
   /// The couplings it adds to the tangent's pattern, once a step.
   virtual void declare_couplings(SparsityBuilder& /*pattern*/) const {}
   /// The pattern is built: where its own entries go can be found once for the step.

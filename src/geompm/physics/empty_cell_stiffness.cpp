@@ -36,8 +36,10 @@ void EmptyCellStiffness::build() {
   const auto pressure_weight = [&](Index ci) {
     return pressure_ ? 1.0 - grid_.cell_mixed_fill()[ci] : 0.0;
   };
+  // In a distributed run each cell's term is added by the process that owns the cell.
   for (Index ci = 0; ci < n_active; ++ci)
-    if (displacement_weight(ci) > 1e-9 || pressure_weight(ci) > 1e-9)
+    if ((displacement_weight(ci) > 1e-9 || pressure_weight(ci) > 1e-9) &&
+        grid_.owns_cell(grid_.active_cells()[ci]))
       offset_[ci] = static_cast<std::int64_t>(stored++);
   stiffness_.assign(stored * m * m, 0.0);
   if (stored == 0) return;

@@ -35,6 +35,18 @@ Vec3 GridSystem::interpolate(const MaterialPoints& points, Index p, const Vector
   return value;
 }
 
+void GridSystem::distribute(const Communicator& communicator, std::vector<int> cell_part) {
+  communicator_ = &communicator;
+  cell_part_ = std::move(cell_part);
+}
+
+void GridSystem::share_active_cells(std::vector<char>& is_active) const {
+  if (!communicator_->distributed()) return;
+  std::vector<int> flags(is_active.begin(), is_active.end());
+  communicator_->max(flags.data(), flags.size());
+  std::copy(flags.begin(), flags.end(), is_active.begin());
+}
+
 std::span<const Index> GridSystem::averaged_stencil_union(Index ci) const {
   if (union_start_.empty()) return {};
   return {union_nodes_.data() + union_start_[ci],
@@ -57,6 +69,11 @@ void GridSystem::initialise(MaterialPoints& points) {
   for_each_cell_typed(
       mesh_, n_active, [&](Index ci) { return active_cells_[ci]; },
       [&](auto e, Index ci) { shape_cell<decltype(e)>(points, ci); }, n_active > 256);
+  // A cell's points are all on the process that owns it: the others add nothing to its fill.
+  if (communicator_->distributed()) {
+    communicator_->sum(cell_fill_);
+    communicator_->sum(cell_mixed_fill_);
+  }
 
   interpolation_->after_activation(
       points,
@@ -86,6 +103,7 @@ void GridSystem::activate_cells(MaterialPoints& points) {
   std::vector<char> is_active(n_cells, 0);
   for (Index p = 0; p < n_points; ++p) is_active[points.cell[p]] = 1;
   interpolation_->before_activation(points, is_active, wide_);
+  share_active_cells(is_active);  // every process activates the cells of every process's points
   std::vector<Index> frontier;
   for (Index c = 0; c < n_cells; ++c)
     if (is_active[c]) frontier.push_back(c);
@@ -174,6 +192,11 @@ void GridSystem::map_to_nodes(const MaterialPoints& points) {
         acceleration_(node * dim + i) += w * points.acceleration[p](i);
       }
     });
+  if (communicator_->distributed()) {  // nodes shared between processes: sum every share
+    communicator_->sum(mass_.data(), mass_.size());
+    communicator_->sum(velocity_.data(), velocity_.size());
+    communicator_->sum(acceleration_.data(), acceleration_.size());
+  }
   const double tiny = n_nodes > 0 ? 1e-14 * std::max(mass_.maxCoeff(), 0.0) : 0.0;
   for (Index a = 0; a < n_nodes; ++a)
     for (int i = 0; i < dim; ++i) {

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "geompm/core/communicator.hpp"
 #include "geompm/core/linear_algebra.hpp"
 #include "geompm/interpolation/interpolation.hpp"
 #include "geompm/materials/material.hpp"
@@ -70,6 +71,19 @@ class GridSystem {
   /// Throws std::invalid_argument if GIMP is asked for on a mesh that is not a rectilinear grid.
   GridSystem(const Mesh& mesh, const MeshTopology& topology,
              const std::vector<const Material*>& materials, const GridSettings& settings);
+
+  /// A distributed run (docs/architecture.md, "Distributed runs"): this process holds the
+  /// points of the cells `cell_part` gives it. The active cells, the cells' fill and the nodal
+  /// mass, momentum and acceleration are summed over the processes, so that every process has
+  /// the whole grid's (the mesh and the grid are replicated; the points are not).
+  void distribute(const Communicator& communicator, std::vector<int> cell_part);
+  const Communicator& communicator() const { return *communicator_; }
+  /// Per mesh cell, the process that owns it (empty in a serial run).
+  const std::vector<int>& cell_part() const { return cell_part_; }
+  /// Whether this process owns mesh cell c (always, in a serial run).
+  bool owns_cell(Index c) const {
+    return cell_part_.empty() || cell_part_[c] == communicator_->rank();
+  }
 
   // --- phase 1: initialise -------------------------------------------------------------
   /// Sorts the points by cell, finds active cells (occupied + buffer) and nodes, colours the
@@ -169,8 +183,12 @@ class GridSystem {
   void build_averaged_stencil_unions(const MaterialPoints& points);
   void colour_active_cells();
 
+  void share_active_cells(std::vector<char>& is_active) const;
+
   const Mesh& mesh_;
   const MeshTopology& topology_;
+  const Communicator* communicator_ = &serial_communicator();
+  std::vector<int> cell_part_;  // per mesh cell: its process (empty: serial)
   std::vector<const Material*> materials_;
   GridSettings settings_;
   int dim_, nen_;

@@ -15,13 +15,23 @@ Vector from_displacement_block(const DofMap& dofs, const Vector& nodal) {
 }
 
 Inertia::Inertia(const GridSystem& grid, const DofMap& dofs, const Newmark& newmark)
-    : dofs_(dofs), newmark_(newmark) {
+    : dofs_(dofs), newmark_(newmark), declares_diagonal_(grid.communicator().distributed()) {
   const int u = dofs.find("displacement");
   mass_ = Vector::Zero(dofs.size());
   for (Index a = 0; a < static_cast<Index>(grid.active_nodes().size()); ++a)
     for (int i = 0; i < grid.dim(); ++i) mass_(dofs.dof(u, a, i)) = grid.nodal_mass()(a);
   velocity_ = from_displacement_block(dofs, grid.nodal_velocity());
   acceleration_ = from_displacement_block(dofs, grid.nodal_acceleration());
+}
+
+void Inertia::declare_couplings(SparsityBuilder& pattern) const {
+  // In a serial run the cells' couplings hold every diagonal entry already.
+  if (!declares_diagonal_) return;
+  const Field& u = dofs_.field(dofs_.find("displacement"));
+  for (Index d = u.offset; d < u.offset + u.entities * u.components; ++d) {
+    const Index unknown[] = {d};
+    pattern.couple_unknowns(unknown);
+  }
 }
 
 void Inertia::attach(const SparseMatrix& pattern) {

@@ -14,6 +14,7 @@ class Inertia final : public Contribution {
  public:
   Inertia(const GridSystem& grid, const DofMap& dofs, const Newmark& newmark);
   const char* name() const override { return "inertia"; }
+  void declare_couplings(SparsityBuilder& pattern) const override;
   void attach(const SparseMatrix& pattern) override;
   bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
 
@@ -34,6 +35,8 @@ class Inertia final : public Contribution {
   Newmark newmark_;
   Vector mass_, velocity_, acceleration_;  // per unknown: the displacement field's, else 0
   std::vector<int> diagonal_;              // per free unknown: its diagonal entry
+  // Distributed: the diagonal is declared, as this process's cells may not reach every node.
+  bool declares_diagonal_ = false;
 };
 
 /// The step's unknowns of the displacement field (dim per active node) from a nodal vector, and

@@ -28,6 +28,7 @@ void PointIntegrator::declare_couplings(SparsityBuilder& pattern) const {
   const auto& node_to_active = grid_.node_to_active();
   std::vector<Index> nodes;
   for (Index c : grid_.active_cells()) {
+    if (!grid_.owns_cell(c)) continue;  // another process's (add_cell)
     nodes.clear();
     for (Index node : grid_.mesh().cell_nodes(c)) nodes.push_back(node_to_active[node]);
     pattern.couple_nodes(nodes);
@@ -49,6 +50,7 @@ void PointIntegrator::attach(const SparseMatrix& pattern) {
   scatter_.assign(std::size_t(n_active) * m * m, -1);
 #pragma omp parallel for schedule(dynamic, 64) if (n_active > 256)
   for (Index ci = 0; ci < n_active; ++ci) {
+    if (!grid_.owns_cell(grid_.active_cells()[ci])) continue;
     const auto nodes = grid_.mesh().cell_nodes(grid_.active_cells()[ci]);
     const int nen = static_cast<int>(nodes.size());  // of a mixed mesh, below nen_
     const int m_cell = cell_unknowns(nen);

@@ -35,6 +35,7 @@ class PointIntegrator final : public Contribution {
   PointIntegrator(const GridSystem& grid, const MaterialPoints& points, const DofMap& dofs,
                   const PressureField* pressure);
   const char* name() const override { return "material points"; }
+  bool sums_own_points() const override { return true; }
   /// The nodes of each active cell, of each wide stencil and of each averaged cell's union.
   void declare_couplings(SparsityBuilder& pattern) const override;
   /// Where each cell's entries go in the tangent.

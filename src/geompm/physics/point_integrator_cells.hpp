@@ -139,6 +139,8 @@ bool PointIntegrator::add_cells(const Vector& du, Vector& f_int, SparseMatrix* t
 template <class E, bool Mixed>
 bool PointIntegrator::add_cell(Index ci, const Vector& du, Vector& f_int, SparseMatrix* tangent) {
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim, m = n + (Mixed ? nen : 0);
+  // In a distributed run another process holds the points of a cell it owns, and adds it.
+  if (!grid_.owns_cell(grid_.active_cells()[ci])) return true;
   const double s_p = pressure_ ? pressure_->scale() : 1.0;
   const auto nodes = grid_.mesh().cell_nodes(grid_.active_cells()[ci]);
   std::array<Index, nen> active;

@@ -26,6 +26,7 @@ class PointSprings final : public PointForces {
   PointSprings(const GridSystem& grid, const MaterialPoints& points, PointTargets targets);
   /// Per driven set: the force its springs exerted on the body at the last evaluation.
   void report(const Vector& du, Reactions& reactions) override;
+  bool sums_own_points() const override { return true; }
   /// The forces the step's prescribed increments would take in the body's own stiffness,
   /// |(k_p / spring_ratio) target_p| over the driven components: the force scale of a body
   /// driven through a rigid motion, whose stresses and spring forces are all round-off.

@@ -4,7 +4,8 @@
 
 namespace geompm {
 
-StepSystem::StepSystem(const GridSystem& grid) : dofs_(grid.active_nodes()) {
+StepSystem::StepSystem(const GridSystem& grid)
+    : dofs_(grid.active_nodes()), communicator_(grid.communicator()) {
   dofs_.add_nodal_field("displacement", FieldKind::Displacement, grid.dim());
   if (grid.mixed()) dofs_.add_nodal_field("pressure", FieldKind::Pressure, 1);
 }
@@ -21,13 +22,29 @@ void StepSystem::build_pattern() {
 bool StepSystem::evaluate(const Vector& du, SystemForces& forces, bool with_tangent) {
   forces.reset(dofs_.size());
   if (with_tangent) std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
-  for (const auto& c : contributions_)
-    if (!c->add(du, forces, with_tangent ? &tangent_ : nullptr)) return false;
+  const bool distributed = communicator_.distributed();
+  bool admissible = true;
+  for (const auto& c : contributions_) {
+    if (distributed && communicator_.rank() != 0 && !c->sums_own_points()) continue;
+    if (!c->add(du, forces, with_tangent ? &tangent_ : nullptr)) {
+      admissible = false;
+      break;
+    }
+  }
+  if (!distributed) return admissible;
+  // Every process's share of the forces, summed; the tangent stays this process's share, which
+  // the distributed linear solver assembles.
+  if (!communicator_.all(admissible)) return false;
+  for (Vector* v : {&forces.internal, &forces.inertia, &forces.external})
+    communicator_.sum(v->data(), static_cast<std::size_t>(v->size()));
   return true;
 }
 
 void StepSystem::report(const Vector& du, Reactions& reactions) {
   for (const auto& c : contributions_) c->report(du, reactions);
+  // The point sets' reactions are sums over the points (the same sets on every process).
+  if (communicator_.distributed())
+    for (auto& [set, force] : reactions.point_sets) communicator_.sum(force.data(), 3);
 }
 
 void StepSystem::commit() {

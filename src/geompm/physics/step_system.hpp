@@ -42,8 +42,12 @@ class StepSystem {
   /// from every contribution's couplings.
   void build_pattern();
   /// The three force sums at the step's unknowns du (every unknown) and, if `with_tangent`, the
-  /// tangent at the free unknowns in tangent(). False if a contribution vetoes du.
+  /// tangent at the free unknowns in tangent(). False if a contribution vetoes du. In a
+  /// distributed run the sums are the whole grid's (summed over the processes) and the tangent
+  /// is this process's share.
   bool evaluate(const Vector& du, SystemForces& forces, bool with_tangent);
+  /// The processes of the run (its grid's).
+  const Communicator& communicator() const { return communicator_; }
   /// The tangent's storage (its pattern is the step's).
   SparseMatrix& tangent() { return tangent_; }
 
@@ -52,6 +56,7 @@ class StepSystem {
 
  private:
   DofMap dofs_;
+  const Communicator& communicator_;
   std::vector<std::unique_ptr<Contribution>> contributions_;
   SparseMatrix tangent_;
 };

@@ -40,30 +40,36 @@ Index MaterialPoints::add(Index body_index, Index material_index, const Vec3& x,
 namespace {
 
 // Applies the same reordering (or filtering) to every field, so no field is ever forgotten.
+// With several stores, fn gets the same field of each (copying between stores).
+template <class Fn, class... Stores>
+void for_each_field_of(Fn&& fn, Stores&... p) {
+  fn(p.id...);
+  fn(p.body...);
+  fn(p.material...);
+  fn(p.sets...);
+  fn(p.position...);
+  fn(p.initial_position...);
+  fn(p.displacement...);
+  fn(p.phase_displacement...);
+  fn(p.velocity...);
+  fn(p.acceleration...);
+  fn(p.mass...);
+  fn(p.volume...);
+  fn(p.initial_volume...);
+  fn(p.initial_half_size...);
+  fn(p.stress...);
+  fn(p.deformation_gradient...);
+  fn(p.domain_stretch...);
+  fn(p.volume_mismatch...);
+  fn(p.elastic_left_cauchy_green...);
+  fn(p.internal...);
+  fn(p.cell...);
+  fn(p.local...);
+}
+
 template <class Fn>
 void for_each_field(MaterialPoints& p, Fn&& fn) {
-  fn(p.id);
-  fn(p.body);
-  fn(p.material);
-  fn(p.sets);
-  fn(p.position);
-  fn(p.initial_position);
-  fn(p.displacement);
-  fn(p.phase_displacement);
-  fn(p.velocity);
-  fn(p.acceleration);
-  fn(p.mass);
-  fn(p.volume);
-  fn(p.initial_volume);
-  fn(p.initial_half_size);
-  fn(p.stress);
-  fn(p.deformation_gradient);
-  fn(p.domain_stretch);
-  fn(p.volume_mismatch);
-  fn(p.elastic_left_cauchy_green);
-  fn(p.internal);
-  fn(p.cell);
-  fn(p.local);
+  for_each_field_of(fn, p);
 }
 
 }  // namespace
@@ -103,6 +109,23 @@ void MaterialPoints::load(ByteReader& in) {
       throw InputError(fmt::format("{}: {} points, but an array of {} values", in.context(),
                                    id.size(), field.size()));
   });
+}
+
+MaterialPoints MaterialPoints::subset(const std::vector<Index>& which) const {
+  MaterialPoints out;
+  for_each_field_of(
+      [&](auto& to, const auto& from) {
+        to.reserve(which.size());
+        for (Index p : which) to.push_back(from[p]);
+      },
+      out, *this);
+  return out;
+}
+
+void MaterialPoints::append(const MaterialPoints& more) {
+  for_each_field_of(
+      [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); }, *this,
+      more);
 }
 
 double MaterialPoints::bytes_per_point() const {

@@ -64,6 +64,11 @@ struct MaterialPoints {
   /// Removes the points whose flag is set, keeping the order of the rest.
   void remove(const std::vector<char>& flag);
 
+  /// The points `which` (indices, in that order) as a store of their own.
+  MaterialPoints subset(const std::vector<Index>& which) const;
+  /// Appends every point of `more` after these.
+  void append(const MaterialPoints& more);
+
   /// Sorts the points by cell (stable), so that a cell's points are contiguous in memory.
   void sort_by_cell();
 

@@ -56,6 +56,9 @@ struct LinearSolverHints {
   std::vector<int> unknown_component;
   /// The fields, a partition of the rows.
   std::vector<LinearSolverField> fields;
+  /// In a distributed run, per row: the process that owns it (its node's owner; process 0 for
+  /// an unknown of no node); empty in a serial run.
+  std::vector<int> unknown_process;
 };
 
 class LinearSolver {

@@ -1,0 +1,51 @@
+#include "geompm/analysis/distribution.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "geompm/core/error.hpp"
+#include "geompm/mesh/partition.hpp"
+
+namespace geompm {
+
+void check_distributable(const Model& model, int processes) {
+  const spec::Model& spec = model.spec;
+  std::vector<std::string> features;
+  if (!model.structures.empty()) features.push_back("structures and their contact");
+  if (model.fem) features.push_back("FEM regions (fem_regions)");
+  if (model.mesh.mixed()) features.push_back("a mesh of more than one cell type");
+  const auto any_phase = [&](auto&& has) {
+    return std::any_of(spec.phases.begin(), spec.phases.end(), has);
+  };
+  if (any_phase([](const spec::Phase& p) { return !p.surface_loads.empty(); }))
+    features.push_back("surface loads (surface_loads)");
+  if (any_phase([](const spec::Phase& p) { return p.newton.tangent_check > 0.0; }))
+    features.push_back("the tangent check (newton.tangent_check)");
+  const bool mixed = spec.numerics.formulation == spec::Formulation::Mixed ||
+                     std::any_of(spec.materials.begin(), spec.materials.end(), [](const auto& m) {
+                       return m.formulation && *m.formulation == spec::Formulation::Mixed;
+                     });
+  if (mixed) features.push_back("the mixed p-u formulation (formulation: mixed)");
+  if (spec.numerics.interpolation == spec::Interpolation::DualDomain)
+    features.push_back("DDMP (numerics.interpolation: ddmp)");
+  if (spec.numerics.sparse_node_stiffness > 0.0)
+    features.push_back("sparse-node springs (numerics.sparse_node_stiffness)");
+  if (spec.numerics.ghost_penalty > 0.0)
+    features.push_back("the ghost penalty (numerics.ghost_penalty)");
+  if (features.empty()) return;
+  std::string list;
+  for (const std::string& f : features) list += "\n  - " + f;
+  throw InputError(fmt::format(
+      "{}: a run on {} processes does not handle yet:{}\nRun it on one process (without "
+      "mpirun), or see docs/user-guide.md, \"Running on several processes\"",
+      spec.file, processes, list));
+}
+
+std::vector<int> partition_by_points(const Model& model, int processes) {
+  std::vector<double> points_in_cell(model.mesh.num_cells(), 0.0);
+  for (Index c : model.points.cell) points_in_cell[c] += 1.0;
+  return partition_cells(model.mesh, points_in_cell, processes);
+}
+
+}  // namespace geompm

@@ -1,0 +1,25 @@
+// What a distributed run (mpirun -np N geompm run) distributes, and what it refuses
+// (docs/architecture.md, "Distributed runs"; docs/user-guide.md, "Running on several processes").
+// The mesh and the grid are replicated on every process; the cells are cut into one part per
+// process (mesh/partition.hpp) by the points they hold when the run starts or resumes, and each
+// process keeps the points of its cells.
+#pragma once
+
+#include <vector>
+
+#include "geompm/analysis/model.hpp"
+#include "geompm/core/communicator.hpp"
+
+namespace geompm {
+
+/// Throws InputError naming the model file and every feature of the model that a distributed
+/// run does not handle yet (structures and contact, FEM regions, surface loads, the mixed p-u
+/// formulation, DDMP, sparse-node springs, the ghost penalty, the tangent check), so that none is
+/// ever run wrongly.
+void check_distributable(const Model& model, int processes);
+
+/// Per mesh cell, the process that owns it: the cells cut by the points they hold (every
+/// process must hold every point, as built or read from a checkpoint).
+std::vector<int> partition_by_points(const Model& model, int processes);
+
+}  // namespace geompm

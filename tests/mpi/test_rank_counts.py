@@ -1,0 +1,123 @@
+"""Distributed runs give the serial run's results (docs/architecture.md, "Distributed runs").
+
+Each example in the distributed subset is run on one process (no mpirun: the serial code, UMFPACK)
+and under mpirun on 2 and 3 processes (MUMPS on the distributed matrix); every history column must
+agree with the serial one to `TOLERANCE` of the column's largest magnitude, which is what the
+Newton tolerances of these examples (1e-9 and tighter on the residual) leave of the difference in
+round-off between the two direct solvers and the order of the sums. A checkpoint written by a run
+on 2 processes, killed half-way through its next checkpoint, resumes on 1 and on 3 processes to
+the same history.
+
+Environment: GEOMPM_BINARY (the geompm executable), GEOMPM_MPIRUN (mpirun).
+"""
+import csv
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BINARY = os.environ.get("GEOMPM_BINARY", os.path.join(ROOT, "build", "geompm"))
+MPIRUN = os.environ.get("GEOMPM_MPIRUN", "mpirun")
+TOLERANCE = 1e-6
+
+EXAMPLES = [
+    "column/column.yaml",  # GIMP, quasi-static, elastic, 2D
+    "column/column_3d.yaml",  # standard MPM, 3D hexahedra
+    "column/column_large_deformation.yaml",  # points cross cells and the parts' boundaries
+    "earth_pressure/rankine_active.yaml",  # Mohr-Coulomb, K0 procedure, grid motion
+    "vibrating_bar/vibrating_bar.yaml",  # dynamic (Newmark), points cross cells
+    "oedometer/oedometer.yaml",  # prescribed point motion and its reaction
+    "mohr_coulomb_footing/mohr_coulomb_footing.yaml",  # a plastic footing driven through its points
+]
+
+
+def run(model, output, processes, *extra, env=None):
+    command = [BINARY, "run", os.path.join(ROOT, "examples", model), "-o", output, "--quiet"]
+    if processes > 1:
+        command = [MPIRUN, "--oversubscribe", "-np", str(processes)] + command
+    environment = dict(os.environ, OMP_NUM_THREADS="1")
+    environment.update(env or {})
+    return subprocess.run(command + list(extra), capture_output=True, text=True, env=environment,
+                          timeout=900)
+
+
+def history(output):
+    with open(os.path.join(output, "history.csv")) as f:
+        rows = list(csv.reader(f))
+    columns = rows[0]
+    values = [[float(v) for v in row] for row in rows[1:]]
+    return columns, values
+
+
+class RankCounts(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="geompm_mpi_")
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def assert_same_history(self, reference, other, label):
+        columns, expected = history(reference)
+        other_columns, got = history(other)
+        self.assertEqual(columns, other_columns, label)
+        self.assertEqual(len(expected), len(got), f"{label}: number of rows")
+        for k, name in enumerate(columns):
+            if name in ("newton_iterations", "time_step"):
+                continue  # the same to the iteration is not asked of another solver's round-off
+            scale = max(abs(row[k]) for row in expected) or 1.0
+            worst = max(abs(a[k] - b[k]) for a, b in zip(expected, got))
+            self.assertLessEqual(worst, TOLERANCE * scale,
+                                 f"{label}: column {name} differs by {worst:.3g} (scale {scale:.3g})")
+
+    def test_history_does_not_depend_on_the_process_count(self):
+        for model in EXAMPLES:
+            serial = os.path.join(self.dir, "serial")
+            done = run(model, serial, 1)
+            self.assertEqual(done.returncode, 0, f"{model} serial: {done.stderr}")
+            for processes in (2, 3):
+                output = os.path.join(self.dir, f"np{processes}")
+                done = run(model, output, processes)
+                self.assertEqual(done.returncode, 0, f"{model} on {processes}: {done.stderr}")
+                self.assert_same_history(serial, output, f"{model} on {processes} processes")
+                self.assertTrue(os.path.isfile(os.path.join(output, "summary.json")))
+
+    def test_iterative_solvers_on_two_processes(self):
+        # BoomerAMG and GAMG on the distributed matrix (nodal blocks, padded at constrained
+        # components) reach the serial direct solver's history within the Newton tolerances.
+        for model in ("earth_pressure/rankine_active.yaml", "column/column_3d.yaml"):
+            serial = os.path.join(self.dir, "serial")
+            done = run(model, serial, 1)
+            self.assertEqual(done.returncode, 0, f"{model} serial: {done.stderr}")
+            for solver in ("petsc_hypre", "petsc_gamg"):
+                output = os.path.join(self.dir, solver)
+                done = run(model, output, 2, "--linear-solver", solver)
+                self.assertEqual(done.returncode, 0, f"{model} with {solver}: {done.stderr}")
+                self.assert_same_history(serial, output, f"{model} with {solver} on 2 processes")
+
+    def test_checkpoint_of_two_processes_resumes_on_one_and_three(self):
+        model = "earth_pressure/rankine_active.yaml"
+        whole = os.path.join(self.dir, "whole")
+        done = run(model, whole, 2)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        for processes in (1, 3):
+            output = os.path.join(self.dir, f"resumed{processes}")
+            # Killed half-way through its third checkpoint: it resumes from the second.
+            killed = run(model, output, 2, "--checkpoint-every", "5",
+                         env={"GEOMPM_TEST_KILL_IN_CHECKPOINT": "3"})
+            self.assertNotEqual(killed.returncode, 0)
+            resumed = run(model, output, processes, "--resume", "--checkpoint-every", "5")
+            self.assertEqual(resumed.returncode, 0, resumed.stderr)
+            self.assert_same_history(whole, output, f"resumed on {processes} processes")
+
+    def test_a_feature_not_distributed_is_refused(self):
+        done = run("strip_footing/strip_footing.yaml", os.path.join(self.dir, "refused"), 2)
+        self.assertEqual(done.returncode, 2, done.stderr)
+        self.assertIn("the mixed p-u formulation (formulation: mixed)", done.stderr)
+        self.assertIn("strip_footing.yaml", done.stderr)
+        self.assertIn("does not handle yet", done.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
