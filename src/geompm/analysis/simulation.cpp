@@ -310,8 +310,13 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   const int every_steps = options_.checkpoint_every.value_or(schedule.every_steps);
   const double every_minutes = schedule.every_minutes;
   if (every_steps <= 0 && every_minutes <= 0) return;  // checkpoints are off
-  const bool due = phase_done || (every_steps > 0 && step_number_ % every_steps == 0) ||
-                   (every_minutes > 0 && seconds_since(last_checkpoint_) >= 60 * every_minutes);
+  const bool timed = every_minutes > 0 && seconds_since(last_checkpoint_) >= 60 * every_minutes;
+  // Each process has its own clock: rank 0's decides, or the processes would part at the gather.
+  const bool timed_on_rank0 = processes_.distributed()
+                                  ? processes_.sum(processes_.rank() == 0 && timed ? 1.0 : 0.0) > 0
+                                  : timed;
+  const bool due =
+      phase_done || (every_steps > 0 && step_number_ % every_steps == 0) || timed_on_rank0;
   if (!due) return;
   with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
   last_checkpoint_ = Clock::now();

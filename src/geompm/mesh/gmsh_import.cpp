@@ -85,8 +85,10 @@ std::string type_list(const std::vector<int>& types) {
 }
 
 // The model's cells of the mesh dimension, of types geompm knows: one type, or tri3 with quad4
-// (2D) and tet4 with hex8 (3D), which share their corner nodes on a conforming interface. Tri6
-// mixes with nothing: its mid-side nodes have no partner on a linear neighbour's edge.
+// (2D), which share their corner nodes on a conforming interface. Tri6 mixes with nothing: its
+// mid-side nodes have no partner on a linear neighbour's edge. Nor do tet4 and hex8: a hex8's
+// bilinear face against two tet4 triangles is not conforming, and the pyramids Gmsh puts between
+// them are not supported (yet).
 GmshCells read_cells(const SourceLocation& where, int dimension) {
   const char* expected = dimension == 2 ? "triangles (tri3, tri6) or quadrangles (quad4)"
                                         : "tetrahedra (tet4) or hexahedra (hex8)";
@@ -99,11 +101,9 @@ GmshCells read_cells(const SourceLocation& where, int dimension) {
   for (int type : types) {
     if (type == 6 || type == 7)  // Gmsh's prism and pyramid
       throw InputError(
-          where,
-          fmt::format("has {} cells, which geompm does not support; Gmsh adds them to join "
-                      "hexahedra to tetrahedra, but expected {} only (a mixed 3D mesh of tet4 and "
-                      "hex8 is read when its hexahedra and tetrahedra meet without them)",
-                      type == 6 ? "prism (wedge)" : "pyramid", expected));
+          where, fmt::format("has {} cells, which geompm does not support; Gmsh adds them to join "
+                             "hexahedra to tetrahedra, but expected {} only",
+                             type == 6 ? "prism (wedge)" : "pyramid", expected));
     if (!cell_type_of_gmsh(type))
       throw InputError(where, fmt::format("has {}D cells of the unsupported type {}; expected {}",
                                           dimension, gmsh_type_name(type), expected));
@@ -112,6 +112,11 @@ GmshCells read_cells(const SourceLocation& where, int dimension) {
     throw InputError(where, fmt::format("mixes tri6 with other cells ({}); tri6 cells have "
                                         "mid-side nodes no linear cell shares, so expected tri6 "
                                         "alone, or tri3 with quad4",
+                                        type_list(types)));
+  if (dimension == 3 && types.size() > 1)
+    throw InputError(where, fmt::format("mixes 3D cell types ({}); a hexahedron's face against "
+                                        "tetrahedra does not conform, so expected one type: "
+                                        "tet4 or hex8",
                                         type_list(types)));
   GmshCells cells;
   for (std::size_t b = 0; b < types.size(); ++b)

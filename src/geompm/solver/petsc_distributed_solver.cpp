@@ -292,7 +292,14 @@ void PetscDistributedSolver::setup(const SparseMatrix& matrix) {
   PC pc = nullptr;
   check(KSPGetPC(ksp_, &pc), "KSPGetPC");
   PCFailedReason failed = PC_NOERROR;
-  check(PCGetFailedReason(pc, &failed), "PCGetFailedReason");
+  check(PCGetFailedReasonRank(pc, &failed), "PCGetFailedReasonRank");
+  // Each process knows only its own failure: agree on the worst, or one process would cut the
+  // step back while the others wait in KSPSolve.
+  int worst = static_cast<int>(failed);
+  if (MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_INT, MPI_MAX,
+                    PetscObjectComm(reinterpret_cast<PetscObject>(pc))) != MPI_SUCCESS)
+    throw LinearSolverFailure("PETSc: the processes could not share the preconditioner's state");
+  failed = static_cast<PCFailedReason>(worst);
   if (failed != PC_NOERROR)
     throw LinearSolverFailure(
         fmt::format("PETSc: the preconditioner failed ({})", PCFailedReasons[failed]));
