@@ -30,15 +30,9 @@ void EmptyCellStiffness::build() {
   // Stored only for the cells that get some (full cells are most of a body).
   offset_.assign(n_active, -1);
   std::size_t stored = 0;
-  const auto displacement_weight = [&](Index ci) {
-    return grid_.settings().empty_cell_modulus > 0.0 ? 1.0 - grid_.cell_fill()[ci] : 0.0;
-  };
-  const auto pressure_weight = [&](Index ci) {
-    return pressure_ ? 1.0 - grid_.cell_mixed_fill()[ci] : 0.0;
-  };
   // In a distributed run each cell's term is added by the process that owns the cell.
   for (Index ci = 0; ci < n_active; ++ci)
-    if ((displacement_weight(ci) > 1e-9 || pressure_weight(ci) > 1e-9) &&
+    if ((displacement_weight(ci) > 0.0 || pressure_weight(ci) > 0.0) &&
         grid_.owns_cell(grid_.active_cells()[ci]))
       offset_[ci] = static_cast<std::int64_t>(stored++);
   stiffness_.assign(stored * m * m, 0.0);
@@ -57,6 +51,16 @@ void EmptyCellStiffness::build() {
       n_active > 256);
 }
 
+double EmptyCellStiffness::displacement_weight(Index ci) const {
+  const double empty = 1.0 - grid_.cell_fill()[ci];
+  return grid_.settings().empty_cell_modulus > 0.0 && empty > 1e-9 ? empty : 0.0;
+}
+
+double EmptyCellStiffness::pressure_weight(Index ci) const {
+  const double empty = 1.0 - grid_.cell_mixed_fill()[ci];
+  return pressure_ && empty > 1e-9 ? empty : 0.0;
+}
+
 template <class E>
 void EmptyCellStiffness::build_cell(Index ci, const Tensor4& C, double pressure_factor) {
   constexpr int nen = E::nodes, dim = E::dim, n = nen * dim;
@@ -68,12 +72,7 @@ void EmptyCellStiffness::build_cell(Index ci, const Tensor4& C, double pressure_
     for (int d = 0; d < nc; ++d)
       A(c, d) = C(pair_index(GC::row[c], GC::col[c]), pair_index(GC::row[d], GC::col[d]));
   const bool axisymmetric = grid_.axisymmetric();
-  const double w_u = grid_.settings().empty_cell_modulus > 0.0 && 1.0 - grid_.cell_fill()[ci] > 1e-9
-                         ? 1.0 - grid_.cell_fill()[ci]
-                         : 0.0;
-  const double w_p = pressure_ && 1.0 - grid_.cell_mixed_fill()[ci] > 1e-9
-                         ? 1.0 - grid_.cell_mixed_fill()[ci]
-                         : 0.0;
+  const double w_u = displacement_weight(ci), w_p = pressure_weight(ci);
   {
     const Eigen::Matrix<double, E::nodes, E::dim> X =
         cell_node_coordinates<cell_type_of<E>>(grid_.mesh(), grid_.active_cells()[ci]).transpose();

@@ -30,6 +30,10 @@ class EmptyCellStiffness final : public CellTerm {
   /// Active cell ci's block (its own unknowns square, at the cell's stride), of type E.
   template <class E>
   void build_cell(Index ci, const Tensor4& C, double pressure_factor);
+  /// The share of active cell ci the displacement and pressure terms hold: the fraction not
+  /// covered by (mixed) points, 0 below 1e-9 (a full cell's round-off) or with the term off.
+  double displacement_weight(Index ci) const;
+  double pressure_weight(Index ci) const;
   int cell_unknowns() const { return m_; }
 
   const GridSystem& grid_;
