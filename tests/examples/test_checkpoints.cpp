@@ -151,6 +151,16 @@ class Checkpoints : public GeompmRunTest<> {
     return r.err;
   }
 
+  /// Runs `model` uninterrupted, then with a checkpoint every 2 steps killed in its second (step
+  /// 4): it resumes from step 2 and must end alike.
+  void kill_in_second_checkpoint_and_resume(const std::string& model) {
+    run_reference(model);
+    write("run.yaml", model);
+    const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "2"});
+    ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
+    EXPECT_TRUE(Contains(resume_and_compare(), "step 2,"));
+  }
+
   /// Runs `model` uninterrupted, then with checkpoints every `every` steps killed at a random
   /// moment of its run and resumed: both must end alike.
   void kill_at_random_and_resume(const std::string& model, int every) {
@@ -261,13 +271,18 @@ TEST_F(Checkpoints, ARoughRigidFootingResumesWithItsContactState) {
 // carries the FEM region's Gauss points and the moved mesh from step to step. Killed in its
 // second checkpoint (step 4), it resumes from step 2 with both and ends as the uninterrupted run.
 TEST_F(Checkpoints, ACoupledModelResumesWithItsFemRegionAndMovedMesh) {
-  const std::string model = replace_once(example_text("coupling/strip_footing_coupled.yaml"),
-                                         "duration: 1.0", "duration: 0.2");
-  run_reference(model);
-  write("run.yaml", model);
-  const CommandResult r = kill_in_checkpoint(2, {"--checkpoint-every", "2"});
-  ASSERT_TRUE(!r.exited && r.signal == SIGKILL) << describe(r);
-  EXPECT_TRUE(Contains(resume_and_compare(), "step 2,"));
+  kill_in_second_checkpoint_and_resume(replace_once(
+      example_text("coupling/strip_footing_coupled.yaml"), "duration: 1.0", "duration: 0.2"));
+}
+
+// The same on a mesh of two cell types (strip_footing_coupled_mixed.yaml: quad4 MPM cells over
+// tri3 FEM cells, docs/theory.md §19.5): the checkpoint carries the mixed mesh's moved nodes and
+// the Gauss points of both kinds of cell. Killed in its second checkpoint (step 4), it resumes
+// from step 2 and ends as the uninterrupted run.
+TEST_F(Checkpoints, AMixedMeshResumesExactly) {
+  kill_in_second_checkpoint_and_resume(
+      replace_once(example_text("coupling/strip_footing_coupled_mixed.yaml"), "duration: 1.0",
+                   "duration: 0.15"));
 }
 
 // A surface load (docs/theory.md §16) writes the boundary series (boundary.pvd), which its

@@ -277,13 +277,14 @@ void check_body_inside_mesh(const spec::Body& body, const RegionTest& region,
 // need linear cells; tri6 serves FEM regions and structures, integrated at Gauss points.
 void check_cell_carries_points(const spec::Body& body, const Mesh& mesh, Index c) {
   if (mesh.type_of(c) != CellType::Tri6) return;
-  throw InputError(body.region.source,
-                   fmt::format("body '{}' would put material points in tri6 cell {} (an MPM "
-                               "cell), but material points need linear cells (tri3, quad4; tet4, "
-                               "hex8): tri6 corner shape functions give nodes negative mass; make "
-                               "the body's tri6 cells an FEM region (regions: {{kind: fem}}) or "
-                               "use tri3 or quad4",
-                               body.name, c));
+  throw InputError(
+      body.region.source,
+      fmt::format("body '{}' would put material points in tri6 cell {} (an MPM "
+                  "cell), but material points need linear cells (tri3, quad4; tet4, "
+                  "hex8, pyramid5): tri6 corner shape functions give nodes negative mass; make "
+                  "the body's tri6 cells an FEM region (regions: {{kind: fem}}) or "
+                  "use tri3 or quad4",
+                  body.name, c));
 }
 
 // One material point of body b at a seeding position of cell c: its material (by its layer),

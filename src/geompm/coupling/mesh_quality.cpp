@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "geompm/mesh/cell_faces.hpp"
+
 namespace geompm {
 namespace {
 
@@ -14,21 +16,8 @@ const std::vector<std::vector<int>>& corner_polygons(CellType type) {
   using Polygons = std::vector<std::vector<int>>;
   static const Polygons triangle = {{0, 1, 2}};
   static const Polygons quadrangle = {{0, 1, 2, 3}};
-  static const Polygons tetrahedron = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
-  static const Polygons hexahedron = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  switch (type) {
-    case CellType::Tri3:
-    case CellType::Tri6:
-      return triangle;
-    case CellType::Quad4:
-      return quadrangle;
-    case CellType::Tet4:
-      return tetrahedron;
-    case CellType::Hex8:
-      break;
-  }
-  return hexahedron;
+  if (cell_dimension(type) == 3) return cell_corner_faces(type);
+  return type == CellType::Quad4 ? quadrangle : triangle;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "geompm/mesh/cell_dispatch.hpp"
+#include "geompm/mesh/cell_faces.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 
@@ -15,25 +16,13 @@ namespace {
 // The facets of a cell type by their corner nodes (local), and for tri6 the mid-side node of
 // each edge.
 struct FacetTable {
-  std::vector<std::vector<int>> corners;
+  const std::vector<std::vector<int>>& corners;
   std::vector<int> middle;  // per facet, or empty
 };
 
 FacetTable facets_of(CellType type) {
-  switch (type) {
-    case CellType::Tri3:
-      return {{{0, 1}, {1, 2}, {2, 0}}, {}};
-    case CellType::Tri6:
-      return {{{0, 1}, {1, 2}, {2, 0}}, {3, 4, 5}};
-    case CellType::Quad4:
-      return {{{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {}};
-    case CellType::Tet4:
-      return {{{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}}, {}};
-    case CellType::Hex8:
-      return {{{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}},
-              {}};
-  }
-  throw std::logic_error("boundary_nodes: unknown cell type");
+  if (type == CellType::Tri6) return {cell_corner_faces(type), {3, 4, 5}};
+  return {cell_corner_faces(type), {}};
 }
 
 // The Laplacian's element matrix int grad N_a . grad N_b dV of cell c (plane measure).

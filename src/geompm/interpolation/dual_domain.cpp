@@ -20,6 +20,11 @@ double cell_bubble(CellType type, const Vec3& xi) {
       return 256.0 * xi(0) * xi(1) * xi(2) * (1.0 - xi(0) - xi(1) - xi(2));
     case CellType::Hex8:
       return (1.0 - xi(0) * xi(0)) * (1.0 - xi(1) * xi(1)) * (1.0 - xi(2) * xi(2));
+    case CellType::Pyramid5: {
+      // The product of the five faces' equations, 1 at its largest, (0, 0, 1/5) on the axis.
+      const double s = 1.0 - xi(2);
+      return 3125.0 / 256.0 * xi(2) * (s * s - xi(0) * xi(0)) * (s * s - xi(1) * xi(1));
+    }
   }
   return 0.0;
 }

@@ -60,7 +60,7 @@ void read_round(const yaml::Node& node, int dimension, spec::Region& region) {
 std::vector<int> points_per_cell_choices(std::optional<CellType> cell, int dimension) {
   if (cell) return allowed_points_per_cell(*cell);
   const std::vector<CellType> types =
-      dimension == 3 ? std::vector{CellType::Tet4, CellType::Hex8}
+      dimension == 3 ? std::vector{CellType::Tet4, CellType::Hex8, CellType::Pyramid5}
                      : std::vector{CellType::Tri3, CellType::Tri6, CellType::Quad4};
   std::vector<int> choices;
   for (CellType type : types)

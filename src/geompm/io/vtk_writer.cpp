@@ -65,6 +65,8 @@ std::uint8_t vtk_cell_type(CellType type) {
       return 10;  // VTK_TETRA
     case CellType::Hex8:
       return 12;  // VTK_HEXAHEDRON
+    case CellType::Pyramid5:
+      return 14;  // VTK_PYRAMID
   }
   throw std::invalid_argument("vtk_cell_type: unknown cell type");
 }

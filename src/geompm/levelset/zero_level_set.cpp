@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "geompm/mesh/cell_faces.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 
 namespace geompm {
@@ -108,7 +109,8 @@ void cut_tetrahedron(const Vertex (&v)[4], Index cell, std::vector<SurfaceFacet>
   emit(t2, 3, g, cell, size, out);
 }
 
-/// The cell's vertices (nodes; centres for quad4 and hex8) and how its simplices use them.
+/// The cell's vertices (nodes; centres for quad4, hex8 and pyramid5) and how its simplices use
+/// them.
 void cut_cell(const Mesh& mesh, Index cell, const std::vector<double>& node_phi,
               std::vector<SurfaceFacet>& out) {
   const auto nodes = mesh.cell_nodes(cell);
@@ -147,10 +149,19 @@ void cut_cell(const Mesh& mesh, Index cell, const std::vector<double>& node_phi,
     } else if constexpr (T == CellType::Tet4) {
       cut_tetrahedron({v[0], v[1], v[2], v[3]}, cell, out);
     } else {
-      constexpr int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                   {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-      const Vertex centre = mean({0, 1, 2, 3, 4, 5, 6, 7});
-      for (const auto& f : faces) {
+      // Hex8, Pyramid5: a tetrahedron from each triangular face to the centre, four from each
+      // quadrangle (about its middle), so that a face shared with a neighbour is cut alike.
+      Vertex centre;
+      for (int a = 0; a < E::nodes; ++a) {
+        centre.xi += v[a].xi / E::nodes;
+        centre.phi += v[a].phi / E::nodes;
+      }
+      centre.x = map_to_physical(mesh, cell, centre.xi);
+      for (const std::vector<int>& f : cell_corner_faces(T)) {
+        if (f.size() == 3) {
+          cut_tetrahedron({v[f[0]], v[f[1]], v[f[2]], centre}, cell, out);
+          continue;
+        }
         const Vertex middle = mean({f[0], f[1], f[2], f[3]});
         for (int k = 0; k < 4; ++k)
           cut_tetrahedron({v[f[k]], v[f[(k + 1) % 4]], middle, centre}, cell, out);

@@ -77,7 +77,8 @@ bool cell_contains(const Mesh& mesh, Index c, const Vec3& x, Vec3& xi) {
 }
 
 // The element rules integrate det J exactly (it has degree <= 2 for every type, also for a
-// curved Tri6 and a trilinear Hex8) and, for the radial measure, x det J too (degree 4 for a
+// curved Tri6 and a trilinear Hex8; for a Pyramid5 it is biquadratic in the collapsed
+// coordinates, docs/theory.md eq. 19.9) and, for the radial measure, x det J too (degree 4 for a
 // curved Tri6, biquadratic for Quad4), so no higher-order rule is needed.
 double cell_measure(const Mesh& mesh, Index c, bool radial) {
   return with_cell_type(mesh, c, [&]<CellType T>() {

@@ -2,7 +2,9 @@
 
 namespace geompm {
 
-int cell_dimension(CellType t) { return (t == CellType::Tet4 || t == CellType::Hex8) ? 3 : 2; }
+int cell_dimension(CellType t) {
+  return (t == CellType::Tet4 || t == CellType::Hex8 || t == CellType::Pyramid5) ? 3 : 2;
+}
 
 int nodes_per_cell(CellType t) {
   switch (t) {
@@ -16,6 +18,8 @@ int nodes_per_cell(CellType t) {
       return 4;
     case CellType::Hex8:
       return 8;
+    case CellType::Pyramid5:
+      return 5;
   }
   return 0;
 }
@@ -32,13 +36,14 @@ const char* to_string(CellType t) {
       return "tet4";
     case CellType::Hex8:
       return "hex8";
+    case CellType::Pyramid5:
+      return "pyramid5";
   }
   return "?";
 }
 
 std::optional<CellType> parse_cell_type(const std::string& name) {
-  for (CellType t :
-       {CellType::Tri3, CellType::Tri6, CellType::Quad4, CellType::Tet4, CellType::Hex8})
+  for (CellType t : all_cell_types)
     if (name == to_string(t)) return t;
   return std::nullopt;
 }

@@ -6,6 +6,7 @@
 //   Quad4:      [-1,1]^2, counter-clockwise from (-1,-1)
 //   Tet4:       (0,0,0) (1,0,0) (0,1,0) (0,0,1)
 //   Hex8:       [-1,1]^3, bottom face counter-clockwise from (-1,-1,-1), then top face
+//   Pyramid5:   base (-1,-1,0) (1,-1,0) (1,1,0) (-1,1,0), apex (0,0,1)
 #pragma once
 
 #include <Eigen/Core>
@@ -55,6 +56,10 @@ template <>
 struct Element<CellType::Hex8> {
   GEOMPM_ELEMENT_COMMON(3, 8)
 };
+template <>
+struct Element<CellType::Pyramid5> {
+  GEOMPM_ELEMENT_COMMON(3, 5)
+};
 
 #undef GEOMPM_ELEMENT_COMMON
 
@@ -70,6 +75,8 @@ decltype(auto) dispatch_cell_type(CellType t, F&& f) {
       return f(Element<CellType::Quad4>{});
     case CellType::Tet4:
       return f(Element<CellType::Tet4>{});
+    case CellType::Pyramid5:
+      return f(Element<CellType::Pyramid5>{});
     case CellType::Hex8:
       break;
   }

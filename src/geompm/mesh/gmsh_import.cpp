@@ -13,6 +13,7 @@
 #include "geompm/core/error.hpp"
 #include "geompm/core/isolated_call.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
+#include "geompm/mesh/face_conformity.hpp"
 #include "geompm/mesh/gmsh_session.hpp"
 
 namespace geompm {
@@ -33,6 +34,8 @@ std::optional<CellType> cell_type_of_gmsh(int gmsh_type) {
       return CellType::Tet4;
     case 5:
       return CellType::Hex8;
+    case 7:
+      return CellType::Pyramid5;
     default:
       return std::nullopt;
   }
@@ -85,13 +88,13 @@ std::string type_list(const std::vector<int>& types) {
 }
 
 // The model's cells of the mesh dimension, of types geompm knows: one type, or tri3 with quad4
-// (2D), which share their corner nodes on a conforming interface. Tri6 mixes with nothing: its
-// mid-side nodes have no partner on a linear neighbour's edge. Nor do tet4 and hex8: a hex8's
-// bilinear face against two tet4 triangles is not conforming, and the pyramids Gmsh puts between
-// them are not supported (yet).
+// (2D), or any of tet4, hex8 and pyramid5 (3D), which share their corner nodes on a conforming
+// interface (checked after the import: check_conforming_faces). Tri6 mixes with nothing: its
+// mid-side nodes have no partner on a linear neighbour's edge. Prisms are not supported.
 GmshCells read_cells(const SourceLocation& where, int dimension) {
-  const char* expected = dimension == 2 ? "triangles (tri3, tri6) or quadrangles (quad4)"
-                                        : "tetrahedra (tet4) or hexahedra (hex8)";
+  const char* expected = dimension == 2
+                             ? "triangles (tri3, tri6) or quadrangles (quad4)"
+                             : "tetrahedra (tet4), hexahedra (hex8) and pyramids (pyramid5)";
 
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> element_tags, element_nodes;
@@ -99,11 +102,13 @@ GmshCells read_cells(const SourceLocation& where, int dimension) {
   if (types.empty())
     throw InputError(where, fmt::format("has no {}D cells; expected {}", dimension, expected));
   for (int type : types) {
-    if (type == 6 || type == 7)  // Gmsh's prism and pyramid
+    if (type == 6)  // Gmsh's prism
       throw InputError(
-          where, fmt::format("has {} cells, which geompm does not support; Gmsh adds them to join "
-                             "hexahedra to tetrahedra, but expected {} only",
-                             type == 6 ? "prism (wedge)" : "pyramid", expected));
+          where, fmt::format("has prism (wedge6) cells, which geompm does not support; Gmsh makes "
+                             "them by extruding triangles or in boundary layers, but expected {} "
+                             "only: mesh the volume with tetrahedra, or recombine it into "
+                             "hexahedra",
+                             expected));
     if (!cell_type_of_gmsh(type))
       throw InputError(where, fmt::format("has {}D cells of the unsupported type {}; expected {}",
                                           dimension, gmsh_type_name(type), expected));
@@ -112,11 +117,6 @@ GmshCells read_cells(const SourceLocation& where, int dimension) {
     throw InputError(where, fmt::format("mixes tri6 with other cells ({}); tri6 cells have "
                                         "mid-side nodes no linear cell shares, so expected tri6 "
                                         "alone, or tri3 with quad4",
-                                        type_list(types)));
-  if (dimension == 3 && types.size() > 1)
-    throw InputError(where, fmt::format("mixes 3D cell types ({}); a hexahedron's face against "
-                                        "tetrahedra does not conform, so expected one type: "
-                                        "tet4 or hex8",
                                         type_list(types)));
   GmshCells cells;
   for (std::size_t b = 0; b < types.size(); ++b)
@@ -265,6 +265,7 @@ Mesh read_open_model(const std::string& path, int dimension) {
     }
   }
   add_groups(groups, cells.tags(), numbering, dimension, mesh);
+  if (mesh.mixed()) check_conforming_faces(mesh, path);
   return mesh;
 }
 

@@ -14,8 +14,7 @@ int Mesh::nodes_per_cell() const {
 std::vector<CellType> Mesh::types_present() const {
   if (!mixed()) return {cell_type};
   std::vector<CellType> types;
-  for (CellType t :
-       {CellType::Tri3, CellType::Tri6, CellType::Quad4, CellType::Tet4, CellType::Hex8})
+  for (CellType t : all_cell_types)
     if (std::find(cell_types.begin(), cell_types.end(), t) != cell_types.end()) types.push_back(t);
   return types;
 }

@@ -90,8 +90,6 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
                                    const GhostPenaltyCells& cells,
                                    const GhostPenaltySettings& settings) {
   constexpr int nen = E::nodes, dim = E::dim;
-  // Nodes a face of the cell has: an edge (2D), a triangle (Tet4) or a quadrangle (Hex8).
-  constexpr int face_nodes = dim == 2 ? 2 : (nen == 4 ? 3 : 4);
   std::vector<Index> active_of(mesh.num_cells(), -1);
   std::vector<char> holds_points(mesh.num_cells(), 0);
   for (std::size_t ci = 0; ci < active_cells.size(); ++ci) {
@@ -119,7 +117,9 @@ std::vector<NodeBlock> faces_typed(const Mesh& mesh, const MeshTopology& topolog
       for (Index node : nodes_a)
         if (std::find(nodes_b.begin(), nodes_b.end(), node) != nodes_b.end())
           corners.push_back(mesh.nodes[node]);
-      if (static_cast<int>(corners.size()) != face_nodes) continue;  // a corner or an edge only
+      // A face shares an edge's two nodes (2D), a triangle's three or a quadrangle's four (3D:
+      // tet4, hex8, pyramid5); fewer are a corner or an edge only.
+      if (static_cast<int>(corners.size()) < dim) continue;
 
       NodeBlock face;
       for (Index node : nodes_a) face.nodes.push_back(node_to_active[node]);
@@ -163,7 +163,8 @@ std::vector<NodeBlock> ghost_penalty_faces(const Mesh& mesh, const MeshTopology&
                                            const GhostPenaltySettings& settings) {
   if (mesh.cell_type == CellType::Tri6)
     throw std::invalid_argument(
-        "numerics.ghost_penalty: needs linear cells (tri3, quad4, tet4, hex8); the jump of a "
+        "numerics.ghost_penalty: needs linear cells (tri3, quad4, tet4, hex8, pyramid5); the jump "
+        "of a "
         "quadratic cell's second derivative is not penalised");
   if (mesh.mixed())
     throw std::invalid_argument(

@@ -104,40 +104,67 @@ SeedPoint make_point(const Eigen::Matrix<double, E::nodes, E::dim>& X, const typ
   return p;
 }
 
+/// The tensor-product box of a cell's sub-cells and its map onto the reference cell: the box
+/// itself, [-1,1]^dim, for quad4 and hex8; for pyramid5 the collapsed hexahedron [-1,1]^2 x [0,1],
+/// xi = u (1 - w), eta = v (1 - w), zeta = w (docs/theory.md eq. 19.9).
+template <class E>
+struct TensorBox {
+  static constexpr bool collapsed = cell_type_of<E> == CellType::Pyramid5;
+  static double lower(int d) { return collapsed && d == 2 ? 0.0 : -1.0; }
+  static double length(int d) { return collapsed && d == 2 ? 1.0 : 2.0; }
+  static typename E::Local reference(const typename E::Local& u) {
+    if constexpr (collapsed)
+      return typename E::Local(u(0) * (1.0 - u(2)), u(1) * (1.0 - u(2)), u(2));
+    else
+      return u;
+  }
+  /// d(xi) / d(u): (1 - w)^2 for the collapse.
+  static double volume_factor(const typename E::Local& u) {
+    if constexpr (collapsed)
+      return (1.0 - u(2)) * (1.0 - u(2));
+    else
+      return 1.0;
+  }
+};
+
 template <class E>
 std::vector<SeedPoint> seed_tensor_cell(const Eigen::Matrix<double, E::nodes, E::dim>& X, int k,
                                         bool axisymmetric) {
-  // Sub-cells of [-1,1]^dim, each integrated with a 3-point Gauss rule per direction (exact
-  // for the bilinear/trilinear Jacobian times the radius).
+  // Sub-cells of the box, each integrated with a 3-point Gauss rule per direction (exact for the
+  // bilinear/trilinear Jacobian times the radius, and for the pyramid's (1 - w)^2 times its
+  // Jacobian, biquadratic in u and v).
+  using Box = TensorBox<E>;
   constexpr int dim = E::dim;
   const double gauss[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
   const double weight[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
-  const double h = 2.0 / k;
   std::vector<SeedPoint> out;
   const int cells = dim == 2 ? k * k : k * k * k;
   for (int s = 0; s < cells; ++s) {
     const int idx[3] = {s % k, (s / k) % k, s / (k * k)};
-    typename E::Local centre;
-    for (int d = 0; d < dim; ++d) centre(d) = -1.0 + (idx[d] + 0.5) * h;
+    typename E::Local centre, h;
+    for (int d = 0; d < dim; ++d) {
+      h(d) = Box::length(d) / k;
+      centre(d) = Box::lower(d) + (idx[d] + 0.5) * h(d);
+    }
     double volume = 0.0;
     const int nq = dim == 2 ? 9 : 27;
     for (int q = 0; q < nq; ++q) {
       const int qi[3] = {q % 3, (q / 3) % 3, q / 9};
-      typename E::Local xi;
+      typename E::Local u;
       double w = 1.0;
       for (int d = 0; d < dim; ++d) {
-        xi(d) = centre(d) + 0.5 * h * gauss[qi[d]];
-        w *= 0.5 * h * weight[qi[d]];
+        u(d) = centre(d) + 0.5 * h(d) * gauss[qi[d]];
+        w *= 0.5 * h(d) * weight[qi[d]];
       }
-      volume += w * volume_density<E>(X, xi, axisymmetric);
+      volume += w * Box::volume_factor(u) * volume_density<E>(X, Box::reference(u), axisymmetric);
     }
     std::vector<typename E::Local> corners;
     for (int c = 0; c < (1 << dim); ++c) {
       typename E::Local corner;
-      for (int d = 0; d < dim; ++d) corner(d) = centre(d) + (c >> d & 1 ? 0.5 : -0.5) * h;
-      corners.push_back(corner);
+      for (int d = 0; d < dim; ++d) corner(d) = centre(d) + (c >> d & 1 ? 0.5 : -0.5) * h(d);
+      corners.push_back(Box::reference(corner));
     }
-    out.push_back(make_point<E>(X, centre, volume, corners));
+    out.push_back(make_point<E>(X, Box::reference(centre), volume, corners));
   }
   return out;
 }
@@ -199,6 +226,7 @@ std::vector<int> allowed_points_per_cell(CellType type) {
     case CellType::Tet4:
       return {1, 4, 8};
     case CellType::Hex8:
+    case CellType::Pyramid5:  // k^3 sub-cells of the collapsed hexahedron
       return {1, 8, 27, 64};
   }
   return {};
@@ -219,7 +247,8 @@ std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axis
         cell_node_coordinates<cell_type_of<E>>(mesh, c).transpose();
     if constexpr (std::is_same_v<E, Element<CellType::Quad4>>)
       return seed_tensor_cell<E>(X, integer_root(count, 2), axisymmetric);
-    else if constexpr (std::is_same_v<E, Element<CellType::Hex8>>)
+    else if constexpr (std::is_same_v<E, Element<CellType::Hex8>> ||
+                       std::is_same_v<E, Element<CellType::Pyramid5>>)
       return seed_tensor_cell<E>(X, integer_root(count, 3), false);
     else if constexpr (std::is_same_v<E, Element<CellType::Tet4>>)
       return seed_tetrahedron<E>(X, count);

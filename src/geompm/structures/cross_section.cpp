@@ -20,6 +20,8 @@ std::vector<std::array<int, 2>> corner_edges(CellType type) {
       return {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
     case CellType::Tet4:
       return {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    case CellType::Pyramid5:
+      return {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
     case CellType::Hex8:
       break;
   }

@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "geompm/mesh/cell_faces.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 
 namespace geompm {
@@ -22,20 +23,14 @@ struct LocalFace {
 };
 
 std::vector<LocalFace> local_faces(CellType type) {
-  switch (type) {
-    case CellType::Tri3:
-      return {{2, 2, {0, 1}}, {2, 2, {1, 2}}, {2, 2, {2, 0}}};
-    case CellType::Tri6:
-      return {{2, 3, {0, 1, 3}}, {2, 3, {1, 2, 4}}, {2, 3, {2, 0, 5}}};
-    case CellType::Quad4:
-      return {{2, 2, {0, 1}}, {2, 2, {1, 2}}, {2, 2, {2, 3}}, {2, 2, {3, 0}}};
-    case CellType::Tet4:
-      return {{3, 3, {0, 2, 1}}, {3, 3, {0, 1, 3}}, {3, 3, {0, 3, 2}}, {3, 3, {1, 2, 3}}};
-    case CellType::Hex8:
-      break;
+  if (type == CellType::Tri6) return {{2, 3, {0, 1, 3}}, {2, 3, {1, 2, 4}}, {2, 3, {2, 0, 5}}};
+  std::vector<LocalFace> faces;
+  for (const std::vector<int>& corners : cell_corner_faces(type)) {
+    LocalFace face{static_cast<int>(corners.size()), static_cast<int>(corners.size()), {}};
+    std::copy(corners.begin(), corners.end(), face.local.begin());
+    faces.push_back(face);
   }
-  return {{4, 4, {0, 3, 2, 1}}, {4, 4, {4, 5, 6, 7}}, {4, 4, {0, 1, 5, 4}},
-          {4, 4, {1, 2, 6, 5}}, {4, 4, {2, 3, 7, 6}}, {4, 4, {3, 0, 4, 7}}};
+  return faces;
 }
 
 // The facet's normal times its size, from its ordered corners: in 2D the segment a -> b turned

@@ -19,6 +19,7 @@
 #include "geompm/core/error.hpp"
 #include "geompm/io/model_reader.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
+#include "hencky_layer.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
@@ -56,12 +57,8 @@ std::string layer(const std::string& regions) {
   return text.replace(text.find("REGIONS"), 7, regions);
 }
 
-// The Hencky material's confined compression to the stretch l: sigma_yy = M ln(l) / l on a width
-// of 1 (the oedometer example's closed form), M = E (1 - nu) / ((1 + nu) (1 - 2 nu)).
-double confined_stress(double l) {
-  const double E = 10000, nu = 0.3;
-  return E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) * std::log(l) / l;
-}
+// sigma_yy of the confined layer at the stretch l, on a width of 1.
+double confined_stress(double l) { return testing::hencky_confined_stress(l); }
 
 TEST(FemRegions, SeedFemCellsAtTheirGaussPointsAndBufferCellsNot) {
   const auto model = build_model(read_model_from_string(
@@ -257,22 +254,9 @@ TEST(MixedMeshes, ARegionsCellTypeSplitsItsRectangles) {
   EXPECT_NEAR(volume, 1.0, 1e-14);
 }
 
-// One step of 1 %: no point leaves its cell, so the points integrate the cells' forces exactly
-// and the homogeneous field is the discrete solution (up to Newton's tolerance).
+// The layer's patch test: 1 % in one step along y (tests/support/hencky_layer.hpp).
 void expect_patch_passes(const testing::ModelRun& run, const MaterialPoints& points) {
-  const double l = 0.99, expected = confined_stress(l);
-  ASSERT_EQ(run.column("top_reaction").size(), 2u);
-  EXPECT_NEAR(run.column("top_reaction")[1], expected, 1e-8 * std::abs(expected));
-  EXPECT_NEAR(run.column("base_reaction")[1], -expected, 1e-8 * std::abs(expected));
-  ASSERT_GT(points.size(), 0);
-  for (Index p = 0; p < points.size(); ++p) {
-    EXPECT_NEAR(points.stress[p](1, 1), expected, 1e-8 * std::abs(expected)) << "point " << p;
-    EXPECT_NEAR(points.stress[p](0, 1), 0.0, 1e-8 * std::abs(expected)) << "point " << p;
-    // u = (l - 1) y of the start position.
-    const double y0 = points.position[p].y() - points.displacement[p].y();
-    EXPECT_NEAR(points.displacement[p].y(), (l - 1.0) * y0, 1e-10) << "point " << p;
-    EXPECT_NEAR(points.displacement[p].x(), 0.0, 1e-10) << "point " << p;
-  }
+  testing::expect_confined_patch_passes(run, points, 1);
 }
 
 TEST(MixedMeshes, MpmPatchTestOnQuadAndTriangleCells) {

@@ -366,6 +366,35 @@ TEST(VtkWriter, AMixedMeshWritesEachCellWithItsOwnType) {
   expect_scalars(read.cell_data.at("fill"), {0.25});  // meshio's first block: the triangle
 }
 
+TEST(VtkWriter, A3dMixedMeshWritesHexahedraPyramidsAndTetrahedra) {
+  // A hexahedron, the pyramid on its face x = 1 and a tetrahedron on one of the pyramid's
+  // triangles: VTK (meshio) reads each with its type (VTK_PYRAMID = 14) and its nodes in
+  // geompm's (Gmsh's) order, which is VTK's.
+  TempDir dir;
+  Mesh mesh;
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},       {0, 0, 1},
+                {1, 0, 1}, {1, 1, 1}, {0, 1, 1}, {1.5, 0.5, 0.5}, {1.5, 1.5, 0.5}};
+  const std::vector<Index> hexahedron = {0, 1, 2, 3, 4, 5, 6, 7}, pyramid = {1, 2, 6, 5, 8},
+                           tetrahedron = {2, 9, 6, 8};
+  mesh.add_cell(CellType::Hex8, hexahedron);
+  mesh.add_cell(CellType::Pyramid5, pyramid);
+  mesh.add_cell(CellType::Tet4, tetrahedron);
+  ASSERT_TRUE(mesh.mixed());
+  FieldSet cells;
+  cells.scalars.push_back({"fill", {0.25, 0.5, 0.75}});
+  write_vtu_mesh(dir.path() / "mixed3d.vtu", mesh, mesh.nodes, {}, cells);
+  const ReadVtu read = read_with_meshio(dir.path() / "mixed3d.vtu");
+  ASSERT_EQ(read.cells.count("hexahedron"), 1u);
+  ASSERT_EQ(read.cells.count("pyramid"), 1u);
+  ASSERT_EQ(read.cells.count("tetra"), 1u);
+  EXPECT_EQ(read.cells.at("hexahedron"),
+            (std::vector<std::vector<double>>{{0, 1, 2, 3, 4, 5, 6, 7}}));
+  EXPECT_EQ(read.cells.at("pyramid"), (std::vector<std::vector<double>>{{1, 2, 6, 5, 8}}));
+  EXPECT_EQ(read.cells.at("tetra"), (std::vector<std::vector<double>>{{2, 9, 6, 8}}));
+  expect_points(read, mesh.nodes);
+  expect_scalars(read.cell_data.at("fill"), {0.25});  // meshio's first block: the hexahedron
+}
+
 TEST(VtkWriter, MeshFieldsOfWrongSizeAreRefusedWithTheirName) {
   TempDir dir;
   const Mesh mesh = two_quads();

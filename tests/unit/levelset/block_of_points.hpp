@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geompm/materials/linear_elastic.hpp"
+#include "geompm/mesh/cell_dispatch.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/mesh_topology.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
@@ -52,26 +53,24 @@ inline std::unique_ptr<Block> fill_block(const StructuredMeshSpec& spec, Kinemat
   }
   const bool radial = kinematics == Kinematics::Axisymmetric;
   std::vector<char> fem(block->mesh.num_cells(), 0);
-  dispatch_cell_type(block->mesh.cell_type, [&](auto e) {
+  for_each_mesh_cell_typed(block->mesh, [&](auto e, Index c) {
     using E = decltype(e);
     constexpr CellType T = cell_type_of<E>;
-    for (Index c = 0; c < block->mesh.num_cells(); ++c) {
-      const NodeCoordinates<T> X = cell_node_coordinates<T>(block->mesh, c);
-      Vec3 centroid = Vec3::Zero();
-      centroid.head<E::dim>() = map_to_physical<T>(X, E::centroid());
-      const int body = body_at(centroid);
-      fem[c] = fem_at && fem_at(centroid);
-      if (body < 0 || fem[c]) continue;
-      for (int q = 0; q < E::quadrature_size(); ++q) {
-        const typename E::Local xi = E::quadrature_point(q);
-        Vec3 x = Vec3::Zero(), local = Vec3::Zero();
-        x.head<E::dim>() = map_to_physical<T>(X, xi);
-        local.head<E::dim>() = xi;
-        double volume = E::quadrature_weight(q) * jacobian<T>(X, xi).determinant();
-        if (radial) volume *= x(0);
-        block->points.add(body, body, x, volume, block->materials[body]->density(), c, local,
-                          Vec3::Zero());
-      }
+    const NodeCoordinates<T> X = cell_node_coordinates<T>(block->mesh, c);
+    Vec3 centroid = Vec3::Zero();
+    centroid.head<E::dim>() = map_to_physical<T>(X, E::centroid());
+    const int body = body_at(centroid);
+    fem[c] = fem_at && fem_at(centroid);
+    if (body < 0 || fem[c]) return;
+    for (int q = 0; q < E::quadrature_size(); ++q) {
+      const typename E::Local xi = E::quadrature_point(q);
+      Vec3 x = Vec3::Zero(), local = Vec3::Zero();
+      x.head<E::dim>() = map_to_physical<T>(X, xi);
+      local.head<E::dim>() = xi;
+      double volume = E::quadrature_weight(q) * jacobian<T>(X, xi).determinant();
+      if (radial) volume *= x(0);
+      block->points.add(body, body, x, volume, block->materials[body]->density(), c, local,
+                        Vec3::Zero());
     }
   });
   GridSettings settings;

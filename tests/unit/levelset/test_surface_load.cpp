@@ -3,9 +3,10 @@
 // pressure p on a chain of facets from A to B that is -p (B - A) rotated clockwise, whatever the
 // chain's shape, so on a straight surface clipped to a box it is the closed form to round-off,
 // and on a circle within the error of the chain's ends (test_zero_level_set.cpp bounds it). A
-// pressure that varies linearly along a flat top integrates exactly (2 Gauss points). A following
-// pressure turns with a rigid rotation of the grid (its resultant rotates, to round-off), and its
-// load stiffness is the derivative of its force: compared with central differences.
+// pressure that varies linearly along a flat top integrates exactly (2 Gauss points), also on a
+// mesh of tri3 and quad4 cells (issue 43), where a tilted line's resultant is the chord too. A
+// following pressure turns with a rigid rotation of the grid (its resultant rotates, to round-off),
+// and its load stiffness is the derivative of its force: compared with central differences.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -78,31 +79,63 @@ TEST(SurfaceLoad, PressureOnACircularArcHasTheChordRotatedAsResultant) {
   EXPECT_NEAR(F.x(), p * (height(3.0) - height(1.25)), p * (end_error(1.25) + end_error(3.0)));
 }
 
-TEST(SurfaceLoad, LinearPressureAndTractionOnAFlatTopIntegrateExactly) {
-  // The top y = 2 of a block on [0, 3]: p = 4 + 2 x gives int p dx = 21 and int p x dx = 36;
-  // a traction (1 + x, 0) gives 7.5 along x. The forces are consistent: every node's share is
-  // int N_a p dx, so also the moment sum_a f_a x_a.
-  auto block =
-      testing::fill_block(testing::block_mesh(CellType::Quad4, {3, 4, 1}), Kinematics::PlaneStrain,
-                          [](const Vec3& x) { return x.y() < 2.0 ? 0 : -1; });
-  StepSystem system(*block->grid);
-  const LevelSet phi(*block->grid, block->points);
-  const SurfaceLoad pressure(*block->grid, system.dofs(), zero_level_set(phi),
-                             SurfaceLoad::Kind::Pressure, false,
+/// On facets of the line y = const over x in [0, 3]: p = 4 + 2 x gives int p dx = 21 and
+/// int p x dx = 36; a traction (1 + x, 0) gives 7.5 along x. The forces are consistent: every
+/// node's share is int N_a p dx, so also the moment sum_a f_a x_a.
+void expect_flat_top_loads(const testing::Block& block, const StepSystem& system,
+                           const std::vector<SurfaceFacet>& facets) {
+  const SurfaceLoad pressure(*block.grid, system.dofs(), facets, SurfaceLoad::Kind::Pressure, false,
                              [](const Vec3& x) { return Vec3(4.0 + 2.0 * x.x(), 0.0, 0.0); });
   const Vector zero = Vector::Zero(system.dofs().size());
   EXPECT_NEAR((pressure.resultant(zero) - Vec3(0.0, -21.0, 0.0)).norm(), 0.0, round_off);
   const Vector f = pressure.force(zero);
   const int u = system.dofs().find("displacement");
   double moment = 0.0;
-  for (std::size_t a = 0; a < block->grid->active_nodes().size(); ++a)
-    moment += f(system.dofs().dof(u, Index(a), 1)) *
-              block->mesh.nodes[block->grid->active_nodes()[a]].x();
+  for (std::size_t a = 0; a < block.grid->active_nodes().size(); ++a)
+    moment +=
+        f(system.dofs().dof(u, Index(a), 1)) * block.mesh.nodes[block.grid->active_nodes()[a]].x();
   EXPECT_NEAR(moment, -36.0, round_off);
-  const SurfaceLoad traction(*block->grid, system.dofs(), zero_level_set(phi),
-                             SurfaceLoad::Kind::Traction, false,
+  const SurfaceLoad traction(*block.grid, system.dofs(), facets, SurfaceLoad::Kind::Traction, false,
                              [](const Vec3& x) { return Vec3(1.0 + x.x(), 0.0, 0.0); });
   EXPECT_NEAR((traction.resultant(zero) - Vec3(7.5, 0.0, 0.0)).norm(), 0.0, round_off);
+}
+
+TEST(SurfaceLoad, LinearPressureAndTractionOnAFlatTopIntegrateExactly) {
+  // The top y = 2 of a block on [0, 3].
+  auto block =
+      testing::fill_block(testing::block_mesh(CellType::Quad4, {3, 4, 1}), Kinematics::PlaneStrain,
+                          [](const Vec3& x) { return x.y() < 2.0 ? 0 : -1; });
+  StepSystem system(*block->grid);
+  const LevelSet phi(*block->grid, block->points);
+  expect_flat_top_loads(*block, system, zero_level_set(phi));
+}
+
+TEST(SurfaceLoad, OnAMixedMeshPressureAndTractionIntegrateAsTheClosedForm) {
+  // The block [0, 3] x [0, 4] of tri3 cells left of x = 1.5 and quad4 cells right of it, full of
+  // points; surfaces crossing both kinds of cell: the line y = 2.5 loaded as the flat top above,
+  // and the tilted line y = 1.3 + 0.3 x under a constant pressure, whose resultant is the chord
+  // rotated.
+  auto spec = testing::block_mesh(CellType::Quad4, {3, 4, 1});
+  spec.cell_type_at = [](const Vec3& x) { return x.x() < 1.5 ? CellType::Tri3 : CellType::Quad4; };
+  auto block = testing::fill_block(spec, Kinematics::PlaneStrain, [](const Vec3&) { return 0; });
+  ASSERT_TRUE(block->mesh.mixed());
+  StepSystem system(*block->grid);
+  const auto flat = zero_level_set(
+      block->mesh, nodal(block->mesh, [](const Vec3& x) { return 2.5 - x.y(); }), {});
+  int in_triangles = 0;
+  for (const SurfaceFacet& facet : flat)
+    in_triangles += block->mesh.type_of(facet.cell) == CellType::Tri3;
+  EXPECT_GT(in_triangles, 0);
+  EXPECT_LT(in_triangles, static_cast<int>(flat.size()));
+  expect_flat_top_loads(*block, system, flat);
+  const double a = 1.3, b = 0.3, p = 7.0;
+  const SurfaceLoad tilted(
+      *block->grid, system.dofs(),
+      zero_level_set(block->mesh,
+                     nodal(block->mesh, [&](const Vec3& x) { return a + b * x.x() - x.y(); }), {}),
+      SurfaceLoad::Kind::Pressure, false, constant(p));
+  const Vector zero = Vector::Zero(system.dofs().size());
+  EXPECT_NEAR((tilted.resultant(zero) + p * 3.0 * Vec3(-b, 1.0, 0.0)).norm(), 0.0, round_off);
 }
 
 /// The block's top as a following pressure, its step system with the load's couplings.

@@ -2,6 +2,8 @@
 #include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <clocale>
 #include <fstream>
 #include <map>
@@ -9,6 +11,7 @@
 #include <string>
 
 #include "geompm/core/error.hpp"
+#include "geompm/mesh/cell_faces.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/gmsh_generate.hpp"
 #include "geompm/mesh/gmsh_import.hpp"
@@ -21,7 +24,8 @@ namespace {
 using testing::TemporaryDirectory;
 using testing::total_measure;
 
-void expect_groups_on_their_sides(const Mesh& mesh, const Vec3& lower, const Vec3& upper) {
+void expect_groups_on_their_sides(const Mesh& mesh, const Vec3& lower, const Vec3& upper,
+                                  bool has_all = true) {
   struct Side {
     const char* name;
     int axis;
@@ -44,6 +48,7 @@ void expect_groups_on_their_sides(const Mesh& mesh, const Vec3& lower, const Vec
     EXPECT_EQ(ids.size(), expected) << side.name;
     for (Index n : ids) EXPECT_NEAR(mesh.nodes[n][side.axis], side.at, 1e-12) << side.name;
   }
+  if (!has_all) return;
   ASSERT_TRUE(mesh.cell_groups.count("all"));
   EXPECT_EQ(static_cast<Index>(mesh.cell_groups.at("all").size()), mesh.num_cells());
 }
@@ -284,33 +289,65 @@ TEST(GmshImportTest, AMeshGmshMakesOfTrianglesAndRecombinedQuadrilaterals) {
   EXPECT_NEAR(outline, 6.0, 1e-12);
 }
 
-TEST(GmshImportTest, RefusesTetrahedraMixedWithHexahedra) {
+TEST(GmshImportTest, RefusesTetrahedraAgainstAHexahedronsFace) {
   TemporaryDirectory directory;
-  // A unit hexahedron and a tetrahedron on its corner (1, 0, 0): refused all the same, as a
-  // hexahedron's face against tetrahedra would not conform.
-  const std::string path = write_file(
-      directory, "mixed3d.msh",
-      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
-      "$Nodes\n1 11 1 11\n3 1 0 11\n1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n"
-      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n2 0 0\n2 1 0\n2 0 1\n"
-      "$EndNodes\n"
-      "$Elements\n2 2 1 2\n3 1 5 1\n1 1 2 3 4 5 6 7 8\n3 1 4 1\n2 2 9 10 11\n$EndElements\n");
+  // A unit hexahedron and two tetrahedra on its face x = 1 (nodes 2 3 7 6), apex 9: the
+  // hexahedron's bilinear face against two triangles does not conform.
+  const std::string path =
+      write_file(directory, "mixed3d.msh",
+                 "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                 "$Nodes\n1 9 1 9\n3 1 0 9\n1\n2\n3\n4\n5\n6\n7\n8\n9\n"
+                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n2 0.5 0.5\n"
+                 "$EndNodes\n"
+                 "$Elements\n2 3 1 3\n3 1 5 1\n1 1 2 3 4 5 6 7 8\n3 1 4 2\n2 2 3 7 9\n3 2 7 6 9\n"
+                 "$EndElements\n");
   const std::string message = import_error(path, 3);
-  EXPECT_NE(message.find("mixes 3D cell types"), std::string::npos) << message;
+  EXPECT_NE(message.find("is not conforming"), std::string::npos) << message;
+  EXPECT_NE(message.find("hex8"), std::string::npos) << message;
+  EXPECT_NE(message.find("tet4"), std::string::npos) << message;
+  EXPECT_NE(message.find("(1, 1, 1)"), std::string::npos) << message;
   EXPECT_NE(message.find("mixed3d.msh"), std::string::npos) << message;
 }
 
-TEST(GmshImportTest, RefusePyramidsAndTri6MixedWithLinearCells) {
+TEST(GmshImportTest, APyramidBetweenAHexahedronAndTetrahedraConforms) {
   TemporaryDirectory directory;
-  const std::string pyramid =
-      write_file(directory, "pyramid.msh",
+  // The same hexahedron, a pyramid on its face x = 1 (apex 9 at x = 1.5), and two tetrahedra
+  // on the pyramid's triangles 3-7-9 and 2-3-9 (out to node 10 and 11): conforming, each shared
+  // face held by two cells.
+  const std::string path =
+      write_file(directory, "hex_pyramid_tet.msh",
                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
-                 "$Nodes\n1 5 1 5\n3 1 0 5\n1\n2\n3\n4\n5\n"
-                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n$EndNodes\n"
-                 "$Elements\n1 1 1 1\n3 1 7 1\n1 1 2 3 4 5\n$EndElements\n");
-  std::string message = import_error(pyramid, 3);
-  EXPECT_NE(message.find("pyramid"), std::string::npos) << message;
-  EXPECT_NE(message.find("pyramid.msh"), std::string::npos) << message;
+                 "$Nodes\n1 11 1 11\n3 1 0 11\n1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n"
+                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n1.5 0.5 0.5\n"
+                 "1.5 1.5 0.5\n1.5 0.5 -0.5\n$EndNodes\n"
+                 "$Elements\n3 4 1 4\n3 1 5 1\n1 1 2 3 4 5 6 7 8\n3 1 7 1\n2 2 3 7 6 9\n"
+                 "3 1 4 2\n3 3 10 7 9\n4 2 3 9 11\n$EndElements\n");
+  const Mesh mesh = read_gmsh_mesh(path, 3);
+  ASSERT_TRUE(mesh.mixed());
+  EXPECT_EQ(cell_type_names(mesh), "tet4 + hex8 + pyramid5");
+  ASSERT_EQ(mesh.num_cells(), 4);
+  for (Index c = 0; c < 4; ++c)
+    EXPECT_EQ(static_cast<int>(mesh.cell_nodes(c).size()), nodes_per_cell(mesh.type_of(c)));
+  // 1 + the pyramid's base times height / 3 + the two tetrahedra's 1/12 each.
+  EXPECT_NEAR(total_measure(mesh), 1.0 + 0.5 / 3.0 + 2.0 / 12.0, 1e-14);
+}
+
+TEST(GmshImportTest, RefusesPrisms) {
+  TemporaryDirectory directory;
+  const std::string prism =
+      write_file(directory, "prism.msh",
+                 "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                 "$Nodes\n1 6 1 6\n3 1 0 6\n1\n2\n3\n4\n5\n6\n"
+                 "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 1\n0 1 1\n$EndNodes\n"
+                 "$Elements\n1 1 1 1\n3 1 6 1\n1 1 2 3 4 5 6\n$EndElements\n");
+  const std::string message = import_error(prism, 3);
+  EXPECT_NE(message.find("prism (wedge6)"), std::string::npos) << message;
+  EXPECT_NE(message.find("pyramids (pyramid5)"), std::string::npos) << message;
+  EXPECT_NE(message.find("prism.msh"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, RefusesTri6MixedWithLinearCells) {
+  TemporaryDirectory directory;
   // A tri6 (corners 1 2 3, mid-sides 7 8 9) beside the quadrangle 2-5-6-3.
   const std::string tri6 =
       write_file(directory, "tri6_quad4.msh",
@@ -318,8 +355,60 @@ TEST(GmshImportTest, RefusePyramidsAndTri6MixedWithLinearCells) {
                  "$Nodes\n1 8 1 8\n2 1 0 8\n1\n2\n3\n5\n6\n7\n8\n9\n"
                  "0 0 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n0.5 0 0\n1 0.5 0\n0.5 0.5 0\n$EndNodes\n"
                  "$Elements\n2 2 1 2\n2 1 9 1\n1 1 2 3 7 8 9\n2 1 3 1\n2 2 5 6 3\n$EndElements\n");
-  message = import_error(tri6, 2);
+  const std::string message = import_error(tri6, 2);
   EXPECT_NE(message.find("mixes tri6"), std::string::npos) << message;
+}
+
+TEST(GmshImportTest, AMeshGmshMakesOfHexahedraPyramidsAndTetrahedraConforms) {
+  // The box [0, 2] x [0, 1]^2 that Gmsh meshed with hexahedra left of x = 1, tetrahedra right
+  // of it and pyramids on the quadrangles of x = 1 (tests/tools/mixed_box_msh.cpp): read, found
+  // conforming on import, each cell on its side.
+  const std::string path = std::string(GEOMPM_SOURCE_DIR) + "/tests/unit/mesh/data/mixed_box.msh";
+  const Mesh mesh = read_gmsh_mesh(path, 3);
+  ASSERT_TRUE(mesh.mixed());
+  EXPECT_EQ(cell_type_names(mesh), "tet4 + hex8 + pyramid5");
+  EXPECT_NEAR(total_measure(mesh), 2.0, 1e-12);
+  Index pyramids = 0;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    Vec3 centre = Vec3::Zero();
+    for (Index n : mesh.cell_nodes(c)) centre += mesh.nodes[n] / mesh.cell_nodes(c).size();
+    if (mesh.type_of(c) == CellType::Hex8) {
+      EXPECT_LT(centre.x(), 1.0);
+    } else {
+      EXPECT_GT(centre.x(), 1.0);
+    }
+    if (mesh.type_of(c) == CellType::Pyramid5) {
+      ++pyramids;
+      // Its base on the interface, the apex inside the tetrahedra's half.
+      for (int a = 0; a < 4; ++a) EXPECT_NEAR(mesh.nodes[mesh.cell_nodes(c)[a]].x(), 1.0, 1e-12);
+      EXPECT_GT(mesh.nodes[mesh.cell_nodes(c)[4]].x(), 1.0);
+    }
+  }
+  EXPECT_EQ(pyramids, 4);  // one on each of the interface's 2 x 2 quadrangles
+  // Conforming: every face is held by two cells, or by one on the box's outline (area 10).
+  std::map<std::vector<Index>, std::pair<int, double>> faces;
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const auto nodes = mesh.cell_nodes(c);
+    for (const auto& corners : cell_corner_faces(mesh.type_of(c))) {
+      std::vector<Index> key;
+      std::vector<Vec3> x;
+      for (int a : corners) key.push_back(nodes[a]), x.push_back(mesh.nodes[nodes[a]]);
+      std::sort(key.begin(), key.end());
+      const Vec3 area = x.size() == 3 ? Vec3(0.5 * (x[1] - x[0]).cross(x[2] - x[0]))
+                                      : Vec3(0.5 * (x[2] - x[0]).cross(x[3] - x[1]));
+      auto& [count, measure] = faces[key];
+      ++count;
+      measure = area.norm();
+    }
+  }
+  double outline = 0.0;
+  for (const auto& [key, use] : faces) {
+    EXPECT_LE(use.first, 2);
+    if (use.first == 1) outline += use.second;
+  }
+  EXPECT_NEAR(outline, 10.0, 1e-12);
+  expect_groups_on_their_sides(mesh, Vec3::Zero(), Vec3(2, 1, 1), false);
+  EXPECT_EQ(mesh.cell_groups.at("hexahedra").size(), 8u);
 }
 
 TEST(GmshImportTest, UnsupportedCellType) {

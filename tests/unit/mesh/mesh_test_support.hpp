@@ -92,7 +92,12 @@ typename Element<T>::Local random_reference_point(std::mt19937& rng) {
   while (true) {
     Local xi;
     for (int i = 0; i < Element<T>::dim; ++i) xi[i] = unit(rng);
-    if (!simplex || xi.sum() <= 1.0) return xi;
+    if constexpr (T == CellType::Pyramid5) {
+      xi[2] = 0.5 * (xi[2] + 1.0);
+      if (Element<T>::contains(xi, 0.0)) return xi;
+    } else if (!simplex || xi.sum() <= 1.0) {
+      return xi;
+    }
   }
 }
 
@@ -109,8 +114,10 @@ inline std::vector<Vec3> reference_edge_points(CellType type, int per_edge, std:
     for (int a = 0; a < corners; ++a)
       for (int b = a + 1; b < corners; ++b) {
         const typename E::Local from = E::node(a), to = E::node(b);
-        // Corners of [-1,1]^d share an edge when they differ in one coordinate only.
-        if (!simplex && ((from - to).array() != 0.0).count() != 1) continue;
+        // Corners of [-1,1]^d share an edge when they differ in one coordinate only; a
+        // pyramid's apex shares one with every corner of the base.
+        const bool apex = T == CellType::Pyramid5 && b == 4;
+        if (!simplex && !apex && ((from - to).array() != 0.0).count() != 1) continue;
         for (int k = 0; k < per_edge; ++k) {
           Vec3 xi = Vec3::Zero();
           xi.head<E::dim>() = from + unit(rng) * (to - from);
@@ -133,6 +140,8 @@ inline double reference_measure(CellType type) {
       return 1.0 / 6.0;
     case CellType::Hex8:
       return 8.0;
+    case CellType::Pyramid5:
+      return 4.0 / 3.0;  // base 4, height 1
   }
   return 0.0;
 }

@@ -156,6 +156,9 @@ std::map<std::vector<Index>, int> count_faces(const Mesh& mesh) {
     case CellType::Hex8:
       faces = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
       break;
+    case CellType::Pyramid5:  // not generated
+      faces = {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+      break;
   }
   std::map<std::vector<Index>, int> count;
   for (Index c = 0; c < mesh.num_cells(); ++c)
