@@ -251,7 +251,8 @@ TEST_F(CliErrors, MeshOfTheWrongDimension) {
   write("model.yaml", model_text(parts));
   const std::string err = expect_input_error();
   EXPECT_TRUE(Contains(err, "mesh.msh: has no 3D cells"));
-  EXPECT_TRUE(Contains(err, "expected tetrahedra (tet4) or hexahedra (hex8)"));
+  EXPECT_TRUE(
+      Contains(err, "expected tetrahedra (tet4), hexahedra (hex8) and pyramids (pyramid5)"));
 }
 
 TEST_F(CliErrors, BodyBoxReachesOutsideTheMesh) {
