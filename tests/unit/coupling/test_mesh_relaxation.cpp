@@ -7,6 +7,7 @@
 #include "geompm/coupling/fem_region.hpp"
 #include "geompm/coupling/mesh_quality.hpp"
 #include "geompm/coupling/mesh_relaxation.hpp"
+#include "geompm/mesh/gmsh_import.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 
 namespace geompm {
@@ -53,6 +54,30 @@ TEST(MeshRelaxation, FindsTheBoundaryNodes) {
     count += boundary[a];
   }
   EXPECT_EQ(count, 16);
+}
+
+TEST(MeshRelaxation, FindsTheBoundaryNodesOfAMeshOfHexahedraPyramidsAndTetrahedra) {
+  // The box [0, 2] x [0, 1]^2 of tests/unit/mesh/data/mixed_box.msh: a hexahedron's face against
+  // a pyramid's base and a pyramid's triangle against a tetrahedron's are inner faces, so only the
+  // nodes on the box's sides are boundary nodes.
+  const Mesh mesh =
+      read_gmsh_mesh(std::string(GEOMPM_SOURCE_DIR) + "/tests/unit/mesh/data/mixed_box.msh", 3);
+  ASSERT_EQ(cell_type_names(mesh), "tet4 + hex8 + pyramid5");
+  const std::vector<char> boundary = boundary_nodes(mesh);
+  Index count = 0;
+  for (Index a = 0; a < mesh.num_nodes(); ++a) {
+    const Vec3& x = mesh.nodes[a];
+    const bool on_side = std::abs(x.x()) < 1e-12 || std::abs(x.x() - 2.0) < 1e-12 ||
+                         std::abs(x.y()) < 1e-12 || std::abs(x.y() - 1.0) < 1e-12 ||
+                         std::abs(x.z()) < 1e-12 || std::abs(x.z() - 1.0) < 1e-12;
+    EXPECT_EQ(boundary[a] != 0, on_side) << "node at " << x.transpose();
+    count += boundary[a];
+  }
+  EXPECT_LT(count, mesh.num_nodes());
+  // The cells' shape: the hexahedra are cubes, the rest Gmsh's tetrahedra and pyramids.
+  const MeshQuality quality = mesh_quality(mesh, {});
+  EXPECT_GT(quality.smallest_angle, 10.0);
+  EXPECT_LT(quality.smallest_angle, 60.0);
 }
 
 TEST(MeshRelaxation, KeepsTheFemNodesAndResetsTheMpmMeshWhenTheyDidNotMove) {

@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "block_of_points.hpp"
 #include "geompm/levelset/zero_level_set.hpp"
+#include "geompm/mesh/gmsh_import.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 
 namespace geompm {
@@ -129,6 +131,31 @@ TEST(ZeroLevelSet, CircularArcEndsOnTheCircleWithinTheEdgeInterpolationError) {
   EXPECT_NEAR(sum_right.x(), exact_right, end_error(1.25) + end_error(3.0));
   EXPECT_GT(std::abs(exact_right), 10 * (end_error(1.25) + end_error(3.0)));  // a real test
   for (const SurfaceFacet& f : facets) EXPECT_GT(f.normal.y(), 0.0);          // out of the disc, up
+}
+
+TEST(ZeroLevelSet, PlanesThroughHexahedraPyramidsAndTetrahedraAreCutExactly) {
+  // The mixed box [0, 2] x [0, 1]^2 (tests/unit/mesh/data/mixed_box.msh): the plane z = 0.55
+  // crosses every kind of cell, x = 1.1 the pyramids and tetrahedra beside the interface. A linear
+  // phi is its own interpolant on each cell's sub-tetrahedra: the cut is the box's section.
+  const Mesh mesh =
+      read_gmsh_mesh(std::string(GEOMPM_SOURCE_DIR) + "/tests/unit/mesh/data/mixed_box.msh", 3);
+  struct Plane {
+    Vec3 normal;
+    double at, area;
+  };
+  for (const Plane& plane : {Plane{Vec3(0, 0, 1), 0.55, 2.0}, Plane{Vec3(1, 0, 0), 1.1, 1.0}}) {
+    const auto phi = [&](const Vec3& x) { return plane.at - plane.normal.dot(x); };
+    const auto facets = zero_level_set(mesh, nodal(mesh, phi), {});
+    std::set<CellType> cut;
+    for (const SurfaceFacet& f : facets) {
+      cut.insert(mesh.type_of(f.cell));
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(phi(f.x[k]), 0.0, round_off);
+      EXPECT_NEAR((f.normal - plane.normal).norm(), 0.0, round_off);
+    }
+    EXPECT_NEAR((area_sum(facets) - plane.area * plane.normal).norm(), 0.0, round_off);
+    EXPECT_TRUE(cut.count(CellType::Pyramid5)) << "at " << plane.at;
+    EXPECT_TRUE(cut.count(CellType::Tet4)) << "at " << plane.at;
+  }
 }
 
 TEST(ZeroLevelSet, BlockOfPointsHasItsTopOnceWithTheUpwardNormal) {
