@@ -42,4 +42,15 @@ inline void expect_confined_patch_passes(const ModelRun& run, const MaterialPoin
   }
 }
 
+/// Ten steps of 1 % to 10 %: an all-FEM layer's deformation is homogeneous, so its top reaction
+/// is the closed form (times `top_area`) at every step, to Newton's tolerance.
+inline void expect_top_reaction_as_closed_form(const ModelRun& run, double top_area = 1.0) {
+  const std::vector<double> top = run.column("top_reaction");
+  ASSERT_EQ(top.size(), 11u);
+  for (std::size_t k = 1; k < top.size(); ++k) {
+    const double expected = top_area * hencky_confined_stress(1.0 - 0.01 * static_cast<double>(k));
+    EXPECT_NEAR(top[k], expected, 1e-8 * std::abs(expected)) << "step " << k;
+  }
+}
+
 }  // namespace geompm::testing

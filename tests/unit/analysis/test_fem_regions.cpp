@@ -288,17 +288,6 @@ TEST(MixedMeshes, FemPatchTestOnQuadAndTriangleCells) {
   expect_patch_passes(run, gauss);
 }
 
-// An all-FEM layer's deformation is homogeneous: the top reaction is the closed form at every
-// step, to Newton's tolerance.
-void expect_top_reaction_as_closed_form(const testing::ModelRun& run) {
-  const std::vector<double> top = run.column("top_reaction");
-  ASSERT_EQ(top.size(), 11u);
-  for (std::size_t k = 1; k < top.size(); ++k) {
-    const double expected = confined_stress(1.0 - 0.01 * static_cast<double>(k));
-    EXPECT_NEAR(top[k], expected, 1e-8 * std::abs(expected)) << "step " << k;
-  }
-}
-
 TEST(MixedMeshes, AllFemMixedLayerCompressesAsTheClosedForm) {
   // Ten steps to 10 %: exact at every step (homogeneous), on tri3 and quad4 FEM cells.
   const std::string regions =
@@ -306,7 +295,7 @@ TEST(MixedMeshes, AllFemMixedLayerCompressesAsTheClosedForm) {
       "right: {kind: fem, region: {box: {min: [0.5, 0], max: [1, 1]}}}}";
   const auto run = testing::run_spec(read_model_from_string(mixed_layer(regions), "layer.yaml"),
                                      "mixed_fem_layer");
-  expect_top_reaction_as_closed_form(run);
+  testing::expect_top_reaction_as_closed_form(run);
 }
 
 TEST(MixedMeshes, Tri6FemLayerCompressesAsTheClosedForm) {
@@ -317,7 +306,7 @@ TEST(MixedMeshes, Tri6FemLayerCompressesAsTheClosedForm) {
   EXPECT_EQ(run.model->mesh.cell_type, CellType::Tri6);
   EXPECT_EQ(run.model->points.size(), 0);
   EXPECT_EQ(run.model->fem->gauss_points().size(), 32 * 6);
-  expect_top_reaction_as_closed_form(run);
+  testing::expect_top_reaction_as_closed_form(run);
 }
 
 TEST(MixedMeshes, ACoupledTriangleFemQuadMpmLayerCompressesAsTheClosedForm) {
