@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "geompm/core/error.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
 #include "mesh_test_support.hpp"
@@ -285,6 +286,25 @@ TEST(Pyramid5, InverseMapFindsPointsOfADistortedPyramidAndRejectsOthers) {
       mesh, 0, map_to_physical(mesh, 0, Vec3(0.1, 0.2, 0.0)) - Vec3(0, 0, 1e-6), found));
   EXPECT_FALSE(cell_contains(mesh, 0, map_to_physical(mesh, 0, Vec3(0.5 + 1e-6, 0.1, 0.5)), found));
   EXPECT_TRUE(cell_contains(mesh, 0, map_to_physical(mesh, 0, Vec3(0.5 - 1e-6, 0.1, 0.5)), found));
+}
+
+TEST(Pyramid5, AnInvertedPyramidIsRefusedNamingIt) {
+  // The apex below the base (counter-clockwise seen from above): negative Jacobian throughout.
+  Mesh mesh;
+  mesh.cell_type = CellType::Pyramid5;
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, -0.7}};
+  mesh.connectivity = {0, 1, 2, 3, 4};
+  try {
+    validate_mesh(mesh, "pyramid.msh");
+    ADD_FAILURE() << "an inverted pyramid was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("cell 0 (pyramid5) is inverted"), std::string::npos) << message;
+    EXPECT_NE(message.find("(0.5, 0.5, -0.7)"), std::string::npos) << message;
+  }
+  mesh.nodes[4].z() = 0.7;
+  EXPECT_NO_THROW(validate_mesh(mesh, "pyramid.msh"));
+  EXPECT_NEAR(cell_measure(mesh, 0), 0.7 / 3.0, 1e-15);
 }
 
 }  // namespace
