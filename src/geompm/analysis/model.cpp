@@ -335,7 +335,9 @@ void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionT
     }
     std::vector<SeedPoint> seeds;
     try {
-      seeds = seed_cell(mesh, c, body.points_per_cell, axisymmetric);
+      const int count = body.points_per_cell > 0 ? body.points_per_cell
+                                                 : default_points_per_cell(mesh.type_of(c));
+      seeds = seed_cell(mesh, c, count, axisymmetric);
     } catch (const std::invalid_argument& e) {
       throw InputError(body.points_per_cell_source, e.what());
     }
@@ -582,8 +584,12 @@ std::string describe_model(const Model& model) {
         b < model.seeds_inside_structures.size() ? model.seeds_inside_structures[b] : 0;
     const std::string left_out =
         inside > 0 ? fmt::format(" ({} seeding positions inside structures left out)", inside) : "";
-    out += fmt::format("body       {}: {} points{}, {} per cell, {}\n", body.name, count, left_out,
-                       body.points_per_cell, material);
+    const std::string per_cell =
+        body.points_per_cell > 0 || model.mesh.dim() == 2
+            ? fmt::format("{} per cell", body.points_per_cell > 0 ? body.points_per_cell : 4)
+            : std::string("4 per tetrahedron, 8 per hexahedron or pyramid");
+    out += fmt::format("body       {}: {} points{}, {}, {}\n", body.name, count, left_out, per_cell,
+                       material);
   }
   for (std::size_t k = 0; k < model.point_set_names.size(); ++k) {
     Index count = 0;

@@ -54,7 +54,7 @@ ModelSize estimate_model_size(const spec::Model& spec) {
                (mesh.cell_type == CellType::Tri6 ? 2 * grid_nodes : 0);
   int most_points = 0;
   for (const spec::Body& body : spec.bodies)
-    most_points = std::max(most_points, body.points_per_cell);
+    most_points = std::max(most_points, body.points_per_cell > 0 ? body.points_per_cell : 8);
   size.points = size.cells * most_points;
   size.bytes = size.cells * (dim == 3 ? bytes_per_cell_3d : bytes_per_cell_2d) +
                size.points * bytes_per_point;

@@ -183,8 +183,9 @@ std::vector<spec::Body> read_bodies(const yaml::Node& node, Context& context) {
       materials.push_back(body.material);
     }
     body.region = read_region(entry.required("region"), context);
-    // 4 points per cell is a quadrilateral's 2 x 2; a hexahedron has no 4-point rule.
-    body.points_per_cell = context.cell_type == CellType::Hex8 ? 8 : 4;
+    // Not given: the cell type's default; an imported mesh's types are known once it is read,
+    // and a 3D one may mix tetrahedra (4) with hexahedra and pyramids (8).
+    body.points_per_cell = context.cell_type ? default_points_per_cell(*context.cell_type) : 0;
     body.points_per_cell_source = body.source;
     body.points_per_cell_source.key_path += ".points_per_cell";
     if (auto count = entry.find("points_per_cell")) {

@@ -232,6 +232,10 @@ std::vector<int> allowed_points_per_cell(CellType type) {
   return {};
 }
 
+int default_points_per_cell(CellType type) {
+  return type == CellType::Hex8 || type == CellType::Pyramid5 ? 8 : 4;
+}
+
 std::vector<SeedPoint> seed_cell(const Mesh& mesh, Index c, int count, bool axisymmetric) {
   const CellType type = mesh.type_of(c);
   const auto allowed = allowed_points_per_cell(type);

@@ -25,6 +25,9 @@ struct SeedPoint {
 
 /// The allowed counts for a cell type (for messages and the model reader).
 std::vector<int> allowed_points_per_cell(CellType type);
+/// The count a body gets where it gives none: 2 x 2 in a quadrilateral (4, which triangles and
+/// tetrahedra allow too), 2 x 2 x 2 in a hexahedron or pyramid (8; neither has a 4-point rule).
+int default_points_per_cell(CellType type);
 
 /// Seeds cell c with `count` points. Throws std::invalid_argument for a count the cell type
 /// does not allow.

@@ -95,7 +95,7 @@ struct Body {
   std::string material;       // one material, or ...
   std::vector<Layer> layers;  // ... layers by elevation, top down (then `material` is empty)
   Region region;
-  int points_per_cell = 4;
+  int points_per_cell = 4;  // 0: each cell's type's default (an imported mesh, not given)
   std::array<std::string, 3> initial_velocity = {"0", "0", "0"};  // expressions of x, y, z
   std::optional<InitialStress> initial_stress;  // none: zero, or the K0 procedure's
   SourceLocation source;

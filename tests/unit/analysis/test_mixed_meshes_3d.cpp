@@ -88,6 +88,21 @@ TEST(MixedMeshes3d, MpmPatchTestOnHexahedraPyramidsAndTetrahedra) {
   testing::expect_confined_patch_passes(run, run.model->points, 2, kTopArea);
 }
 
+// A body that gives no points_per_cell on an imported mesh gets each cell type's default: a
+// hexahedron and a pyramid have no 4-point rule, so a body-wide 4 could not seed them.
+TEST(MixedMeshes3d, ABodyWithoutACountSeedsEachCellTypesDefault) {
+  const std::string text = replace_once(layer("{all: {kind: mpm, region: all}}", "0.01", "1.0"),
+                                        "region: all, points_per_cell: 8}", "region: all}");
+  const auto model = build_model(read_model_from_string(text, "layer.yaml"));
+  const auto count = points_by_cell_type(*model, model->points);
+  EXPECT_EQ(count[1], 8 * 8);  // 8 in each of the 8 hexahedra
+  EXPECT_EQ(count[2], 4 * 8);  // 8 in each of the 4 pyramids
+  EXPECT_EQ(count[0] % 4, 0);  // 4 in each tetrahedron
+  EXPECT_GT(count[0], 100 * 4);
+  EXPECT_NE(describe_model(*model).find("4 per tetrahedron, 8 per hexahedron or pyramid"),
+            std::string::npos);
+}
+
 TEST(MixedMeshes3d, FemPatchTestOnHexahedraPyramidsAndTetrahedra) {
   const auto run = testing::run_spec(
       read_model_from_string(layer("{all: {kind: fem, region: all}}", "0.01", "1.0"), "layer.yaml"),
