@@ -20,6 +20,7 @@
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/fnv1a.hpp"
 #include "geompm/core/interrupt.hpp"
@@ -88,16 +89,7 @@ int run_command(const RunCommand& command) {
   std::ifstream in(command.model_file, std::ios::binary);
   options.model_hash = geompm::fnv1a_64(
       std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-  try {
-    geompm::run_analysis(*model, options);
-  } catch (const geompm::InputError&) {
-    // Every process of a distributed run meets these together: rank 0 says it, once.
-    if (!first) return 2;
-    throw;
-  } catch (const geompm::RunError&) {
-    if (!first) return 3;
-    throw;
-  }
+  geompm::run_analysis(*model, options);
   return 0;
 }
 
@@ -300,15 +292,14 @@ int main(int argc, char** argv) {
     if (*check) return check_command(model_file);
     if (*mesh) return mesh_command(mesh_options);
     if (*plot) return plot_command(plot_options);
-  } catch (const geompm::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  } catch (const geompm::RunError& e) {
-    std::cerr << "\nrun stopped: " << e.what() << "\n";
-    return 3;
   } catch (const std::exception& e) {
-    std::cerr << "internal error: " << e.what() << "\n";
-    return 4;
+    // Every process of a distributed run meets the errors that reach here together (the model
+    // read by each, core/agreement.hpp for the run's): process 0 says it, once.
+    if (!*run || geompm::launched_rank() == 0) {
+      if (dynamic_cast<const geompm::RunError*>(&e)) std::cerr << "\n";  // after the progress line
+      std::cerr << geompm::describe_error(e) << "\n";
+    }
+    return geompm::exit_code(e);
   }
   return 0;
 }

@@ -30,6 +30,8 @@ EXAMPLES = [
     "vibrating_bar/vibrating_bar.yaml",  # dynamic (Newmark), points cross cells
     "oedometer/oedometer.yaml",  # prescribed point motion and its reaction
     "mohr_coulomb_footing/mohr_coulomb_footing.yaml",  # a plastic footing driven through its points
+    "strip_footing/strip_footing.yaml",  # mixed p-u, Tresca, incremental pressure, fitted start
+    "thick_cylinder/thick_cylinder.yaml",  # mixed p-u, axisymmetric, a limit pressure
 ]
 
 
@@ -83,6 +85,31 @@ class RankCounts(unittest.TestCase):
                 self.assert_same_history(serial, output, f"{model} on {processes} processes")
                 self.assertTrue(os.path.isfile(os.path.join(output, "summary.json")))
 
+    def test_sparse_node_springs_and_ghost_penalty(self):
+        # The thick cylinder's outer face moves into empty cells: its edge cells get the ghost
+        # penalty's faces and its barely reached nodes the sparse-node springs (the fill limit
+        # raised so that there are some), terms of no point that every process builds alike from
+        # the cells' summed fill and largest modulus, and process 0 assembles.
+        with open(os.path.join(ROOT, "examples", "thick_cylinder", "thick_cylinder.yaml")) as f:
+            text = f.read()
+        model = os.path.join(self.dir, "cylinder_with_terms.yaml")
+        with open(model, "w") as f:
+            f.write(text + "numerics: {sparse_node_stiffness: 0.01, sparse_node_fill: 0.5, "
+                           "ghost_penalty: 0.05, ghost_penalty_fill: 0.9}\n")
+        plain = os.path.join(self.dir, "plain")
+        self.assertEqual(run("thick_cylinder/thick_cylinder.yaml", plain, 1).returncode, 0)
+        serial = os.path.join(self.dir, "serial")
+        done = run(model, serial, 1)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        # The terms act: the history is not the plain model's.
+        with self.assertRaises(AssertionError):
+            self.assert_same_history(plain, serial, "with the terms against without")
+        for processes in (2, 3):
+            output = os.path.join(self.dir, f"np{processes}")
+            done = run(model, output, processes)
+            self.assertEqual(done.returncode, 0, f"on {processes}: {done.stderr}")
+            self.assert_same_history(serial, output, f"with the terms on {processes} processes")
+
     def test_iterative_solvers_on_two_processes(self):
         # BoomerAMG and GAMG on the distributed matrix (nodal blocks, padded at constrained
         # components) reach the serial direct solver's history within the Newton tolerances.
@@ -112,11 +139,11 @@ class RankCounts(unittest.TestCase):
             self.assert_same_history(whole, output, f"resumed on {processes} processes")
 
     def test_a_feature_not_distributed_is_refused(self):
-        done = run("strip_footing/strip_footing.yaml", os.path.join(self.dir, "refused"), 2)
+        done = run("coupling/strip_footing_coupled.yaml", os.path.join(self.dir, "refused"), 2)
         self.assertEqual(done.returncode, 2, done.stderr)
-        self.assertIn("the mixed p-u formulation (formulation: mixed)", done.stderr)
-        self.assertIn("strip_footing.yaml", done.stderr)
-        self.assertIn("does not handle yet", done.stderr)
+        self.assertIn("FEM regions (fem_regions)", done.stderr)
+        self.assertIn("strip_footing_coupled.yaml", done.stderr)
+        self.assertEqual(done.stderr.count("does not handle yet"), 1, done.stderr)
 
 
 if __name__ == "__main__":
