@@ -63,14 +63,29 @@ int run_command(const RunCommand& command) {
   if (command.threads > 0) omp_set_num_threads(command.threads);
   geompm::install_interrupt_handler();  // Ctrl-C: the run stops cleanly between steps (exit 3)
   // Read and build everything before anything is written, so bad input leaves no output.
-  auto spec = geompm::read_model(command.model_file);
-  override_linear_solver(command, spec.numerics);
-  auto model = geompm::build_model(spec);
+  std::optional<geompm::spec::Model> spec;
+  std::unique_ptr<geompm::Model> model;
+  std::exception_ptr unread;
+  try {
+    spec = geompm::read_model(command.model_file);
+    override_linear_solver(command, spec->numerics);
+    model = geompm::build_model(*spec);
+  } catch (...) {
+    unread = std::current_exception();
+  }
   // Under mpirun/srun with several processes: a distributed run (docs/user-guide.md, "Running on
-  // several processes"); MPI is started only then. Process 0 writes the files and the log.
+  // several processes"); MPI is started only then, with the model's PETSc options. Every process
+  // has read the model: if one could not, they stop together (core/agreement.hpp), process 0
+  // saying why before any process ends (mpirun would stop it with the first to end).
   std::unique_ptr<geompm::Communicator> processes;
-  if (geompm::launched_with_several_processes())
-    processes = geompm::mpi_world_communicator(spec.numerics.petsc_options);
+  if (geompm::launched_with_several_processes()) {
+    processes = geompm::mpi_world_communicator(spec ? spec->numerics.petsc_options : "");
+    geompm::together(*processes, [&] {
+      if (unread) std::rethrow_exception(unread);
+    });
+  } else if (unread) {
+    std::rethrow_exception(unread);
+  }
   const bool first = !processes || processes->rank() == 0;
   std::string output = command.output;
   if (output.empty())

@@ -18,12 +18,8 @@ void check_distributable(const Model& model, int processes) {
   const auto any_phase = [&](auto&& has) {
     return std::any_of(spec.phases.begin(), spec.phases.end(), has);
   };
-  if (any_phase([](const spec::Phase& p) { return !p.surface_loads.empty(); }))
-    features.push_back("surface loads (surface_loads)");
   if (any_phase([](const spec::Phase& p) { return p.newton.tangent_check > 0.0; }))
     features.push_back("the tangent check (newton.tangent_check)");
-  if (spec.numerics.interpolation == spec::Interpolation::DualDomain)
-    features.push_back("DDMP (numerics.interpolation: ddmp)");
   if (features.empty()) return;
   std::string list;
   for (const std::string& f : features) list += "\n  - " + f;
