@@ -32,6 +32,9 @@ EXAMPLES = [
     "mohr_coulomb_footing/mohr_coulomb_footing.yaml",  # a plastic footing driven through its points
     "strip_footing/strip_footing.yaml",  # mixed p-u, Tresca, incremental pressure, fitted start
     "thick_cylinder/thick_cylinder.yaml",  # mixed p-u, axisymmetric, a limit pressure
+    "structures/contact_patch.yaml",  # a rigid plate in contact: its unknowns on process 0
+    "structures/contact_friction.yaml",  # contact with friction: stick and slip
+    "structures/strip_footing_rough.yaml",  # a rough rigid footing on mixed p-u clay
 ]
 
 
@@ -124,6 +127,17 @@ class RankCounts(unittest.TestCase):
             model = self.variant(example, lambda text: text + "numerics: {interpolation: ddmp}\n")
             serial = self.assert_same_on_two_and_three(model, f"{example} with DDMP")
             self.assert_changes_history(example, serial, f"{example}: DDMP against standard")
+
+    def test_contact_with_adhesion(self):
+        # The rough footing with adhesion (shear at most 0.5 s_u): each contact segment reads the
+        # mean s_u of the points in the cell under it, summed over the processes (without, process
+        # 0, which assembles the contact, reads the cells of its own points only: the run stopped
+        # after 35 of 68 steps).
+        example = "structures/strip_footing_rough.yaml"
+        model = self.variant(example, lambda text: text.replace(
+            "contact: {tangential: rough}", "contact: {tangential: adhesion, alpha: 0.5}"))
+        serial = self.assert_same_on_two_and_three(model, "the footing with adhesion")
+        self.assert_changes_history(example, serial, "adhesion against rough")
 
     def test_sparse_node_springs_and_ghost_penalty(self):
         # The thick cylinder's outer face moves into empty cells: its edge cells get the ghost
