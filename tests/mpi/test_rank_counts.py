@@ -35,6 +35,7 @@ EXAMPLES = [
     "structures/contact_patch.yaml",  # a rigid plate in contact: its unknowns on process 0
     "structures/contact_friction.yaml",  # contact with friction: stick and slip
     "structures/strip_footing_rough.yaml",  # a rough rigid footing on mixed p-u clay
+    "structures/deformable_pile.yaml",  # a deformable structure in contact
 ]
 
 

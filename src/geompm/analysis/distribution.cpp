@@ -12,9 +12,6 @@ namespace geompm {
 void check_distributable(const Model& model, int processes) {
   const spec::Model& spec = model.spec;
   std::vector<std::string> features;
-  if (std::any_of(model.structures.begin(), model.structures.end(),
-                  [](const auto& s) { return !s->rigid(); }))
-    features.push_back("deformable structures");
   if (model.fem) features.push_back("FEM regions (fem_regions)");
   if (model.mesh.mixed()) features.push_back("a mesh of more than one cell type");
   const auto any_phase = [&](auto&& has) {
