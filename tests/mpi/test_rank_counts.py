@@ -140,6 +140,22 @@ class RankCounts(unittest.TestCase):
         serial = self.assert_same_on_two_and_three(model, "the footing with adhesion")
         self.assert_changes_history(example, serial, "adhesion against rough")
 
+    def test_mixed_cell_types(self):
+        # A band of tri3 cells in the quad4 meshes (a region's cell type): the large-deformation
+        # column, whose points cross from one type to the other and between the parts, and the
+        # thick cylinder (mixed p-u, axisymmetric), whose parts' cuts fall in both types.
+        bands = {
+            "column/column_large_deformation.yaml":
+                "regions: {middle: {kind: mpm, cell: tri3, region: {box: {min: [0, 10], "
+                "max: [1, 30]}}}}\n",
+            "thick_cylinder/thick_cylinder.yaml":
+                "regions: {inner: {kind: mpm, cell: tri3, region: {box: {min: [1, 0], "
+                "max: [1.5, 0.1]}}}}\n",
+        }
+        for example, band in bands.items():
+            model = self.variant(example, lambda text: text + band)
+            self.assert_same_on_two_and_three(model, f"{example} with tri3 cells")
+
     def test_sparse_node_springs_and_ghost_penalty(self):
         # The thick cylinder's outer face moves into empty cells: its edge cells get the ghost
         # penalty's faces and its barely reached nodes the sparse-node springs (the fill limit

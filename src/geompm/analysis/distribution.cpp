@@ -13,7 +13,6 @@ void check_distributable(const Model& model, int processes) {
   const spec::Model& spec = model.spec;
   std::vector<std::string> features;
   if (model.fem) features.push_back("FEM regions (fem_regions)");
-  if (model.mesh.mixed()) features.push_back("a mesh of more than one cell type");
   const auto any_phase = [&](auto&& has) {
     return std::any_of(spec.phases.begin(), spec.phases.end(), has);
   };
