@@ -20,6 +20,7 @@
 
 #include "geompm/analysis/model.hpp"
 #include "geompm/analysis/run.hpp"
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/fnv1a.hpp"
 #include "geompm/core/interrupt.hpp"
@@ -62,14 +63,29 @@ int run_command(const RunCommand& command) {
   if (command.threads > 0) omp_set_num_threads(command.threads);
   geompm::install_interrupt_handler();  // Ctrl-C: the run stops cleanly between steps (exit 3)
   // Read and build everything before anything is written, so bad input leaves no output.
-  auto spec = geompm::read_model(command.model_file);
-  override_linear_solver(command, spec.numerics);
-  auto model = geompm::build_model(spec);
+  std::optional<geompm::spec::Model> spec;
+  std::unique_ptr<geompm::Model> model;
+  std::exception_ptr unread;
+  try {
+    spec = geompm::read_model(command.model_file);
+    override_linear_solver(command, spec->numerics);
+    model = geompm::build_model(*spec);
+  } catch (...) {
+    unread = std::current_exception();
+  }
   // Under mpirun/srun with several processes: a distributed run (docs/user-guide.md, "Running on
-  // several processes"); MPI is started only then. Process 0 writes the files and the log.
+  // several processes"); MPI is started only then, with the model's PETSc options. Every process
+  // has read the model: if one could not, they stop together (core/agreement.hpp), process 0
+  // saying why before any process ends (mpirun would stop it with the first to end).
   std::unique_ptr<geompm::Communicator> processes;
-  if (geompm::launched_with_several_processes())
-    processes = geompm::mpi_world_communicator(spec.numerics.petsc_options);
+  if (geompm::launched_with_several_processes()) {
+    processes = geompm::mpi_world_communicator(spec ? spec->numerics.petsc_options : "");
+    geompm::together(*processes, [&] {
+      if (unread) std::rethrow_exception(unread);
+    });
+  } else if (unread) {
+    std::rethrow_exception(unread);
+  }
   const bool first = !processes || processes->rank() == 0;
   std::string output = command.output;
   if (output.empty())
@@ -88,16 +104,7 @@ int run_command(const RunCommand& command) {
   std::ifstream in(command.model_file, std::ios::binary);
   options.model_hash = geompm::fnv1a_64(
       std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-  try {
-    geompm::run_analysis(*model, options);
-  } catch (const geompm::InputError&) {
-    // Every process of a distributed run meets these together: rank 0 says it, once.
-    if (!first) return 2;
-    throw;
-  } catch (const geompm::RunError&) {
-    if (!first) return 3;
-    throw;
-  }
+  geompm::run_analysis(*model, options);
   return 0;
 }
 
@@ -300,15 +307,14 @@ int main(int argc, char** argv) {
     if (*check) return check_command(model_file);
     if (*mesh) return mesh_command(mesh_options);
     if (*plot) return plot_command(plot_options);
-  } catch (const geompm::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  } catch (const geompm::RunError& e) {
-    std::cerr << "\nrun stopped: " << e.what() << "\n";
-    return 3;
   } catch (const std::exception& e) {
-    std::cerr << "internal error: " << e.what() << "\n";
-    return 4;
+    // Every process of a distributed run meets the errors that reach here together (the model
+    // read by each, core/agreement.hpp for the run's): process 0 says it, once.
+    if (!*run || geompm::launched_rank() == 0) {
+      if (dynamic_cast<const geompm::RunError*>(&e)) std::cerr << "\n";  // after the progress line
+      std::cerr << geompm::describe_error(e) << "\n";
+    }
+    return geompm::exit_code(e);
   }
   return 0;
 }

@@ -12,27 +12,12 @@ namespace geompm {
 void check_distributable(const Model& model, int processes) {
   const spec::Model& spec = model.spec;
   std::vector<std::string> features;
-  if (!model.structures.empty()) features.push_back("structures and their contact");
   if (model.fem) features.push_back("FEM regions (fem_regions)");
-  if (model.mesh.mixed()) features.push_back("a mesh of more than one cell type");
   const auto any_phase = [&](auto&& has) {
     return std::any_of(spec.phases.begin(), spec.phases.end(), has);
   };
-  if (any_phase([](const spec::Phase& p) { return !p.surface_loads.empty(); }))
-    features.push_back("surface loads (surface_loads)");
   if (any_phase([](const spec::Phase& p) { return p.newton.tangent_check > 0.0; }))
     features.push_back("the tangent check (newton.tangent_check)");
-  const bool mixed = spec.numerics.formulation == spec::Formulation::Mixed ||
-                     std::any_of(spec.materials.begin(), spec.materials.end(), [](const auto& m) {
-                       return m.formulation && *m.formulation == spec::Formulation::Mixed;
-                     });
-  if (mixed) features.push_back("the mixed p-u formulation (formulation: mixed)");
-  if (spec.numerics.interpolation == spec::Interpolation::DualDomain)
-    features.push_back("DDMP (numerics.interpolation: ddmp)");
-  if (spec.numerics.sparse_node_stiffness > 0.0)
-    features.push_back("sparse-node springs (numerics.sparse_node_stiffness)");
-  if (spec.numerics.ghost_penalty > 0.0)
-    features.push_back("the ghost penalty (numerics.ghost_penalty)");
   if (features.empty()) return;
   std::string list;
   for (const std::string& f : features) list += "\n  - " + f;

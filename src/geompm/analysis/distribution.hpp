@@ -13,9 +13,7 @@
 namespace geompm {
 
 /// Throws InputError naming the model file and every feature of the model that a distributed
-/// run does not handle yet (structures and contact, FEM regions, surface loads, the mixed p-u
-/// formulation, DDMP, sparse-node springs, the ghost penalty, the tangent check), so that none is
-/// ever run wrongly.
+/// run does not handle yet (FEM regions, the tangent check), so that none is ever run wrongly.
 void check_distributable(const Model& model, int processes);
 
 /// Per mesh cell, the process that owns it: the cells cut by the points they hold (every

@@ -8,6 +8,7 @@
 #include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/motion_check.hpp"
 #include "geompm/analysis/output_folder.hpp"
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/interrupt.hpp"
 #include "geompm/io/checkpoint_file.hpp"
@@ -78,15 +79,18 @@ void Simulation::with_all_points(Write&& write) const {
     return;
   }
   MaterialPoints all = gather_points(model_.points, processes_);
-  if (!writes_files()) return;
-  std::swap(model_.points, all);
-  try {
-    write();
-  } catch (...) {
+  // Process 0 writes; every process learns whether that went well (a full disk stops them all).
+  together(processes_, [&] {
+    if (!writes_files()) return;
     std::swap(model_.points, all);
-    throw;
-  }
-  std::swap(model_.points, all);
+    try {
+      write();
+    } catch (...) {
+      std::swap(model_.points, all);
+      throw;
+    }
+    std::swap(model_.points, all);
+  });
 }
 
 void Simulation::distribute_points() {
@@ -97,11 +101,15 @@ void Simulation::distribute_points() {
 }
 
 void Simulation::start() {
-  // Every process holds every point until they are shared out, after the initial output.
-  if (!writes_files()) {
-    distribute_points();
-    return;
-  }
+  // Every process holds every point until they are shared out, after the initial output. Process
+  // 0 writes it; the others learn whether it could (an output directory that cannot be used).
+  together(processes_, [&] {
+    if (writes_files()) start_output();
+  });
+  distribute_points();
+}
+
+void Simulation::start_output() {
   // What an earlier run in the same directory left must not be mistaken for this run's: its
   // checkpoint (a later --resume would go back to it), its summary, ParaView files, plots and
   // history, a half-written checkpoint, the temporaries of files being written when it was killed.
@@ -119,21 +127,27 @@ void Simulation::start() {
   output_ = std::make_unique<OutputWriter>(model_, options_.output_dir);
   output_->initial();
   summary_.history_file = output_->history_file();
-  distribute_points();
 }
 
 void Simulation::resume() {
   const std::filesystem::path checkpoint = checkpoint_file(options_.output_dir);
-  if (!std::filesystem::is_regular_file(checkpoint))
-    throw InputError(fmt::format(
-        "{}: no checkpoint to resume from (a run writes one every output.checkpoint.every_steps "
-        "steps or every_minutes minutes, and at the end of each phase); run without --resume "
-        "to start again",
-        checkpoint.string()));
-  load(checkpoint);
+  together(processes_, [&] {
+    if (!std::filesystem::is_regular_file(checkpoint))
+      throw InputError(fmt::format(
+          "{}: no checkpoint to resume from (a run writes one every "
+          "output.checkpoint.every_steps steps or every_minutes minutes, and at the end of each "
+          "phase); run without --resume to start again",
+          checkpoint.string()));
+    load(checkpoint);
+  });
   // Whatever rank count wrote it: the checkpoint holds every point; the cut is made anew.
   distribute_points();
-  if (!writes_files()) return;
+  together(processes_, [&] {
+    if (writes_files()) resume_output(checkpoint);
+  });
+}
+
+void Simulation::resume_output(const std::filesystem::path& checkpoint) {
   // A half-written checkpoint of the run that stopped is of no use (the one just read is), nor
   // are the temporaries of the files it was writing when it was killed.
   std::filesystem::remove(checkpoint_temporary(checkpoint));
@@ -178,9 +192,12 @@ void Simulation::run_phase() {
     // A signal reaches the processes at different moments: they stop together, when any has it.
     if (processes_.distributed() ? !processes_.all(!interrupt_requested()) : interrupt_requested())
       stop_on_interrupt();
+    inject_test_fault(processes_, "between_steps");
     const double t = control_->time(), dt = control_->trial_step();
     const StepResult step = stepper_.advance(*phase_, t, dt);
-    if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
+    together(processes_, [&] {
+      if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
+    });
     if (!step.converged) {
       cut_back(step, t, dt);
       continue;
@@ -281,8 +298,10 @@ void Simulation::accept(const StepResult& step, double dt) {
   };
   if (vtk || !model_.spec.output.histories.empty())
     with_all_points(write_step);
-  else if (output_)
-    write_step();
+  else
+    together(processes_, [&] {
+      if (output_) write_step();
+    });
   update_clocks();
 
   double total_duration = 0.0;
@@ -360,7 +379,8 @@ void Simulation::update_clocks() {
 
 void Simulation::stop(const std::string& message) {
   summary_.phases[phase_index_].status = "stopped";
-  throw RunError(message);
+  // Every process stops here together: each decision that leads here is shared by all.
+  throw Shared<RunError>(message);
 }
 
 void Simulation::finish(const std::string& stop_reason) {
@@ -383,6 +403,12 @@ void Simulation::finish(const std::string& stop_reason) {
       });
     } catch (const std::exception&) {
     }
+  together(processes_, [&] {
+    if (writes_files()) finish_output(stop_reason);
+  });
+}
+
+void Simulation::finish_output(const std::string& stop_reason) {
   if (output_) {
     summary_.history_columns = output_->columns();
     summary_.history_last = output_->last_values();
@@ -398,7 +424,7 @@ void Simulation::finish(const std::string& stop_reason) {
       }
     }
   }
-  if (writes_files()) write_summary_json(options_.output_dir / "summary.json", summary_);
+  write_summary_json(options_.output_dir / "summary.json", summary_);
 }
 
 }  // namespace geompm

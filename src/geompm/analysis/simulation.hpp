@@ -50,6 +50,10 @@ class Simulation {
   const RunSummary& summary() const { return summary_; }
 
  private:
+  /// Process 0's part of start(), resume() and finish(): the output directory and files.
+  void start_output();
+  void resume_output(const std::filesystem::path& checkpoint);
+  void finish_output(const std::string& stop_reason);
   void begin_phase();
   void run_phase();
   void cut_back(const StepResult& step, double t, double dt);

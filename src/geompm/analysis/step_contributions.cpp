@@ -109,11 +109,15 @@ void structures(StepSystem& system, StepContext& c) {
 void contacts(StepSystem& system, StepContext& c) {
   // Each structure's contact with the soil's level set (docs/theory.md §18), its multipliers
   // after the structures' unknowns.
+  if (c.model.contacts.empty()) return;
+  // The stiffest material the points carry, on every process's points.
+  double modulus = c.model.largest_modulus();
+  c.grid.communicator().max(&modulus, 1);
   for (ContactPair& pair : c.model.contacts)
     if (pair.enabled)
       system.add(std::make_unique<LevelSetContact>(c.grid, c.model.points, *c.model.locator,
                                                    *c.model.structures[pair.structure], pair,
-                                                   c.model.largest_modulus(), system.dofs()));
+                                                   modulus, system.dofs()));
 }
 
 void surface_loads(StepSystem& system, StepContext& c) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geompm/core/byte_archive.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/mesh/cell_geometry.hpp"
 #include "geompm/mesh/element.hpp"
@@ -113,6 +114,7 @@ LevelSetContact::LevelSetContact(const GridSystem& grid, const MaterialPoints& p
       if (std::string(material->internal_variable_name(k)) == "su") su = k;
     su_index_.push_back(su);
   }
+  if (pair_.law.alpha > 0.0) find_cell_strengths();
   for (const std::vector<Index>& group : group_pieces()) {
     Kinematics k;
     if (build_kinematics(group, k)) segments_.push_back(std::move(k));
@@ -163,17 +165,27 @@ std::vector<std::vector<Index>> LevelSetContact::group_pieces() const {
   return out;
 }
 
+void LevelSetContact::find_cell_strengths() {
+  const Index n_active = static_cast<Index>(grid_.active_cells().size());
+  std::vector<double> sum(n_active, 0.0), volume(n_active, 0.0);
+  for (Index ci = 0; ci < n_active; ++ci)
+    for (Index p = grid_.cell_point_begin(ci); p < grid_.cell_point_end(ci); ++p) {
+      const int su = su_index_[points_.material[p]];
+      if (su < 0 || (!pair_.bodies.empty() && !pair_.bodies[points_.body[p]])) continue;
+      sum[ci] += points_.volume[p] * points_.internal[p][su];
+      volume[ci] += points_.volume[p];
+    }
+  // A cell's points are on the process that owns it; the contact may read any cell.
+  grid_.communicator().sum(sum);
+  grid_.communicator().sum(volume);
+  strength_.assign(n_active, 0.0);
+  for (Index ci = 0; ci < n_active; ++ci)
+    if (volume[ci] > 0.0) strength_[ci] = sum[ci] / volume[ci];
+}
+
 double LevelSetContact::cell_strength(Index cell) const {
   const Index ci = active_of_cell_[cell];
-  if (ci < 0) return 0.0;
-  double sum = 0.0, volume = 0.0;
-  for (Index p = grid_.cell_point_begin(ci); p < grid_.cell_point_end(ci); ++p) {
-    const int su = su_index_[points_.material[p]];
-    if (su < 0 || (!pair_.bodies.empty() && !pair_.bodies[points_.body[p]])) continue;
-    sum += points_.volume[p] * points_.internal[p][su];
-    volume += points_.volume[p];
-  }
-  return volume > 0.0 ? sum / volume : 0.0;
+  return ci < 0 ? 0.0 : strength_[ci];
 }
 
 void LevelSetContact::refuse_fem_cell(Index cell, const Vec3& x) const {
@@ -393,6 +405,17 @@ bool LevelSetContact::add(const Vector& du, SystemForces& forces, SparseMatrix* 
 }
 
 void LevelSetContact::report(const Vector& du, Reactions& reactions) {
+  if (const Communicator& processes = grid_.communicator(); processes.distributed()) {
+    std::vector<int> states;
+    for (const ContactState state : state_) states.push_back(static_cast<int>(state));
+    ByteWriter mine;
+    if (processes.rank() == 0) mine.put(states);
+    const std::string process0 = processes.all_gather(mine.take()).front();
+    ByteReader in(process0, "contact states of process 0");
+    in.get(states);
+    for (std::size_t k = 0; k < state_.size(); ++k)
+      state_[k] = static_cast<ContactState>(states[k]);
+  }
   // The soil pushes the structure out along -n and against its slip along -t (eq. 18.10).
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
   converged_.assign(segments_.size(), {0.0, 0.0, 0.0});

@@ -30,7 +30,9 @@ class LevelSetContact final : public Contribution {
 
   void declare_couplings(SparsityBuilder& pattern) const override;
   bool add(const Vector& du, SystemForces& forces, SparseMatrix* tangent) override;
-  /// The contact force on the structure into reactions.contacts.
+  /// The contact force on the structure into reactions.contacts. Collective in a distributed
+  /// run: process 0 evaluates the contact (a term of no point), and every process takes its
+  /// segments' states, which the next step's tracking reads.
   void report(const Vector& du, Reactions& reactions) override;
   /// The pair keeps the converged multipliers, pressures, shears and states.
   void commit() override;
@@ -68,9 +70,13 @@ class LevelSetContact final : public Contribution {
   /// Throws RunError if mesh cell `cell`, which the surface at x reaches, is an FEM cell.
   void refuse_fem_cell(Index cell, const Vec3& x) const;
   std::optional<Location> soil_cell(const Vec3& x, const Vec3& normal, double h, Index cell) const;
-  /// The mean s_u of the touched bodies' points in a cell (0 if none carries one).
+  /// With adhesion: per active cell, the mean s_u of the touched bodies' points in it (0 if none
+  /// carries one), over every process's points.
+  void find_cell_strengths();
+  /// The mean s_u of the touched bodies' points in a mesh cell (0 if none carries one).
   double cell_strength(Index cell) const;
   std::vector<double> fill_;  // per mesh cell: the fraction its points cover (0 outside the grid)
+  std::vector<double> strength_;       // per active cell (find_cell_strengths)
   std::vector<Index> active_of_cell_;  // per mesh cell: its index among the active cells, or -1
   std::vector<int> su_index_;          // per material: its internal variable "su", or -1
   static constexpr double fill_threshold_ = 0.5;  // a cell at least half filled holds its nodes

@@ -31,6 +31,7 @@ class Communicator {
   void sum(std::vector<double>& values) const { sum(values.data(), values.size()); }
   /// The largest value per element over the processes, in place.
   virtual void max(int* values, std::size_t count) const = 0;
+  virtual void max(double* values, std::size_t count) const = 0;
   /// Whether `value` holds on every process.
   virtual bool all(bool value) const = 0;
   /// Sends outgoing[r] to process r and returns what each process sent to this one (incoming[r]
@@ -42,6 +43,10 @@ class Communicator {
   virtual std::vector<std::string> gather(const std::string& mine) const = 0;
   /// Waits until every process has come here.
   virtual void barrier() const = 0;
+  /// Ends every process of the run now, with exit code `code`: the last resort for an error met
+  /// by this process alone (core/agreement.hpp), which the others would wait for at their next
+  /// collective call.
+  [[noreturn]] virtual void abort(int code) const = 0;
 
   /// Sums a count over the processes.
   Index sum(Index value) const;
@@ -54,5 +59,9 @@ const Communicator& serial_communicator();
 /// Whether this process was started by mpirun/mpiexec or srun with more than one process
 /// (from the launcher's environment, without starting MPI): only then does a run start MPI.
 bool launched_with_several_processes();
+
+/// This process's rank as its launcher announces it (0 when it was not started by one), known
+/// before MPI starts: the errors every process meets in reading the model are said by rank 0.
+int launched_rank();
 
 }  // namespace geompm

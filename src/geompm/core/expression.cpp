@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/error.hpp"
 
 namespace geompm {
@@ -77,6 +78,14 @@ double Expression::operator()(double x, double y, double z, double t) const {
         std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf"), at));
   }
   return value;
+}
+
+double Expression::at_time(double t) const {
+  try {
+    return (*this)(0.0, 0.0, 0.0, t);
+  } catch (const NonFiniteValue& e) {
+    throw Shared<NonFiniteValue>(e.what());
+  }
 }
 
 }  // namespace geompm

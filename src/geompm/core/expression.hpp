@@ -23,7 +23,10 @@ class Expression {
   /// The value; throws NonFiniteValue (naming the expression, where it was given and the
   /// arguments) if it is NaN or infinite: no such value may pass silently into a run.
   double operator()(double x, double y, double z, double t) const;
-  double at_time(double t) const { return (*this)(0.0, 0.0, 0.0, t); }
+  /// The value at time t alone. A non-finite one is thrown as met by every process of a
+  /// distributed run (core/agreement.hpp): each evaluates the phase's functions of time at the
+  /// same t.
+  double at_time(double t) const;
   const std::string& text() const { return text_; }
   bool is_constant_zero() const { return text_ == "0"; }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "geompm/core/byte_archive.hpp"
 #include "geompm/mesh/element.hpp"
 
 namespace geompm {
@@ -27,6 +28,37 @@ double cell_bubble(CellType type, const Vec3& xi) {
     }
   }
   return 0.0;
+}
+
+// A distributed run: each process has summed eq. 8.1 over its own points; every process gets
+// the sums over all of them (a node between processes sees the points of both sides), added in
+// rank order so that the bits are the same on every process.
+template <int Dim>
+void share_node_sums(const Communicator& processes, std::vector<double>& weight,
+                     std::vector<std::vector<std::pair<Index, Eigen::Matrix<double, Dim, 1>>>>& G) {
+  processes.sum(weight);
+  ByteWriter mine;
+  for (std::size_t j = 0; j < G.size(); ++j)
+    for (const auto& [i, g] : G[j]) {
+      mine.put(static_cast<Index>(j));
+      mine.put(i);
+      mine.put(g);
+    }
+  for (auto& row : G) row.clear();
+  for (const std::string& part : processes.all_gather(mine.take())) {
+    ByteReader in(part, "DDMP node sums of another process");
+    while (in.remaining() > 0) {
+      const auto j = in.get<Index>();
+      const auto i = in.get<Index>();
+      const auto g = in.get<Eigen::Matrix<double, Dim, 1>>();
+      auto& row = G[j];
+      auto it = std::find_if(row.begin(), row.end(), [&](const auto& e) { return e.first == i; });
+      if (it == row.end())
+        row.emplace_back(i, g);
+      else
+        it->second += g;
+    }
+  }
 }
 
 template <class E>
@@ -65,6 +97,8 @@ void build(const MaterialPoints& points, const StencilInputs& in, WideStencils& 
       }
     }
   }
+
+  if (in.processes.distributed()) share_node_sums<dim>(in.processes, weight, G);
 
   out.clear(n_points);
   std::vector<std::pair<Index, Gradient>> entries;

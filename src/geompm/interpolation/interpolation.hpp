@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geompm/core/communicator.hpp"
 #include "geompm/mesh/mesh.hpp"
 #include "geompm/points/material_points.hpp"
 
@@ -38,6 +39,9 @@ struct StencilInputs {
   Index active_nodes = 0;
   const std::vector<double>& shape;
   const std::vector<double>& gradients;
+  /// The processes of a distributed run: each holds the points of its cells, and a node's sums
+  /// over the points around it take every process's.
+  const Communicator& processes = serial_communicator();
 };
 
 class Interpolation {

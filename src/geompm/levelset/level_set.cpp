@@ -59,6 +59,8 @@ LevelSet::LevelSet(const GridSystem& grid, const MaterialPoints& points, std::ve
     const double V = points.volume[p] * per;
     grid.for_each_weight(points, p, [&](Index node, double N) { filled[node] += N * V; });
   }
+  // A node between processes is filled by the points of every process's cells around it.
+  grid.communicator().sum(filled);
   const std::vector<double> support = support_measure(grid, filled);
   phi_.assign(n_nodes, outside);
   for (std::size_t a = 0; a < n_nodes; ++a)

@@ -194,6 +194,9 @@ std::vector<NodeBlock> ghost_penalty_blocks(const GridSystem& grid, const Materi
           3.0 * m.bulk + m.shear > 0.0 ? 9.0 * m.bulk * m.shear / (3.0 * m.bulk + m.shear) : 0.0;
       modulus[ci] = std::max(modulus[ci], E);
     }
+  // A cell's points are on the process that owns it: every process gets its modulus (and adds
+  // the same faces; process 0 assembles them, as it does every term of no point).
+  grid.communicator().max(modulus.data(), modulus.size());
   return ghost_penalty_faces(
       grid.mesh(), grid.topology(), grid.active_cells(), grid.node_to_active(),
       {modulus, grid.cell_fill()},

@@ -77,7 +77,8 @@ void GridSystem::initialise(MaterialPoints& points) {
 
   interpolation_->after_activation(
       points,
-      {mesh_, node_to_active_, static_cast<Index>(active_nodes_.size()), shape_, gradients_},
+      {mesh_, node_to_active_, static_cast<Index>(active_nodes_.size()), shape_, gradients_,
+       *communicator_},
       wide_);
   union_start_.clear();
   union_nodes_.clear();

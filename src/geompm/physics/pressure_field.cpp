@@ -35,6 +35,20 @@ void PressureField::initialise(const GridSystem& grid, const MaterialPoints& poi
       start_(node_to_active[nodes[a]]) += w * pressure;
     }
   }
+  // In a distributed run each process has summed its own points: the nodes between processes
+  // get every process's share, the scale the stiffest soil of every process's points.
+  if (const Communicator& processes = grid.communicator(); processes.distributed()) {
+    processes.sum(start_.data(), static_cast<std::size_t>(n_nodes));
+    processes.sum(weight.data(), static_cast<std::size_t>(n_nodes));
+    double sums[2] = {size, static_cast<double>(count)};
+    processes.sum(sums, 2);
+    size = sums[0];
+    count = static_cast<Index>(sums[1]);
+    double largest[2] = {shear, bulk};
+    processes.max(largest, 2);
+    shear = largest[0];
+    bulk = largest[1];
+  }
   for (Index a = 0; a < n_nodes; ++a)
     if (weight(a) > 0.0) start_(a) /= weight(a);
   scale_ = count > 0 ? shear / (size / count) : 1.0;

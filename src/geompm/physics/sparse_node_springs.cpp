@@ -39,6 +39,8 @@ std::vector<NodeBlock> springs_of_sparse_nodes(const GridSystem& grid,
         seen[na] += grid.cell_shape(p)[a] * points.volume[p];
     }
   }
+  // A node between processes sees the points of every process's cells around it.
+  grid.communicator().sum(seen);
   const double fill_min = grid.settings().sparse_node_fill;
   for (Index na = 0; na < n_nodes; ++na) {
     const double fill = covered[na] > 0.0 ? seen[na] / covered[na] : 1.0;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geompm/core/agreement.hpp"
+
 namespace geompm {
 
 StepSystem::StepSystem(const GridSystem& grid)
@@ -23,18 +25,21 @@ bool StepSystem::evaluate(const Vector& du, SystemForces& forces, bool with_tang
   forces.reset(dofs_.size());
   if (with_tangent) std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
   const bool distributed = communicator_.distributed();
-  bool admissible = true;
-  for (const auto& c : contributions_) {
-    if (distributed && communicator_.rank() != 0 && !c->sums_own_points()) continue;
-    if (!c->add(du, forces, with_tangent ? &tangent_ : nullptr)) {
-      admissible = false;
-      break;
+  const auto add_all = [&] {
+    inject_test_fault(communicator_, "step");
+    for (const auto& c : contributions_) {
+      if (distributed && communicator_.rank() != 0 && !c->sums_own_points()) continue;
+      if (!c->add(du, forces, with_tangent ? &tangent_ : nullptr)) return false;
     }
-  }
-  if (!distributed) return admissible;
+    return true;
+  };
+  if (!distributed) return add_all();
+  // Whether every process's points were admissible, or what went wrong on one (a stress update
+  // that threw, a non-finite value): one reduction, so that no process is left waiting at the
+  // sums below for one that has stopped.
+  if (!together_all(communicator_, add_all)) return false;
   // Every process's share of the forces, summed; the tangent stays this process's share, which
   // the distributed linear solver assembles.
-  if (!communicator_.all(admissible)) return false;
   for (Vector* v : {&forces.internal, &forces.inertia, &forces.external})
     communicator_.sum(v->data(), static_cast<std::size_t>(v->size()));
   return true;

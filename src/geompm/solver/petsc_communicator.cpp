@@ -3,6 +3,7 @@
 // PETSc includes MPI without its C++ bindings (which would need libmpi_cxx).
 #include <petscsys.h>
 
+#include <cstdlib>
 #include <numeric>
 #include <stdexcept>
 
@@ -45,6 +46,11 @@ class MpiCommunicator final : public Communicator {
   void max(int* values, std::size_t count) const override {
     if (count == 0) return;
     check(MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_INT, MPI_MAX, comm_),
+          "MPI_Allreduce");
+  }
+  void max(double* values, std::size_t count) const override {
+    if (count == 0) return;  // a maximum is the same bits in any order
+    check(MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_MAX, comm_),
           "MPI_Allreduce");
   }
   bool all(bool value) const override {
@@ -93,6 +99,10 @@ class MpiCommunicator final : public Communicator {
     return split(all, counts, at);
   }
   void barrier() const override { check(MPI_Barrier(comm_), "MPI_Barrier"); }
+  [[noreturn]] void abort(int code) const override {
+    MPI_Abort(comm_, code);
+    std::_Exit(code);  // MPI_Abort does not return; should it, this process still ends
+  }
 
  private:
   static std::vector<std::string> split(const std::string& all, const std::vector<int>& counts,
