@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "geompm/analysis/output_fields.hpp"
 #include "geompm/core/error.hpp"
@@ -227,13 +229,21 @@ std::string OutputWriter::points_file(int step_number) {
 
 // A point flowed plastically in the step if its equivalent plastic strain grew. A step that lost
 // points (numerics.lost_points: remove) flags none.
+// By the points' ids: the points are reordered by cell every step (and lost ones removed), so
+// a point's index at the step's start is not its index now.
 void OutputWriter::find_plastic_points() {
-  std::vector<double> now = equivalent_plastic_strain(model_);
+  const std::vector<double> now = equivalent_plastic_strain(model_);
+  const std::vector<Index>& id = model_.points.id;
   plastic_.assign(now.size(), 0);
-  if (now.size() == step_start_plastic_strain_.size())
-    for (std::size_t i = 0; i < now.size(); ++i)
-      plastic_[i] = now[i] > step_start_plastic_strain_[i] ? 1 : 0;
-  step_start_plastic_strain_ = std::move(now);
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    const auto k = static_cast<std::size_t>(id[i]);
+    plastic_[i] = k < step_start_plastic_strain_.size() && now[i] > step_start_plastic_strain_[k];
+  }
+  const Index largest_id = id.empty() ? -1 : *std::max_element(id.begin(), id.end());
+  step_start_plastic_strain_.assign(static_cast<std::size_t>(largest_id + 1),
+                                    std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < now.size(); ++i)
+    step_start_plastic_strain_[static_cast<std::size_t>(id[i])] = now[i];
 }
 
 void OutputWriter::write_points(double time, int step_number) {

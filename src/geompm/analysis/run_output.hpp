@@ -79,8 +79,8 @@ class OutputWriter {
   HistoryWriter history_;
   HistoryWriter newton_;
   std::vector<double> last_values_;
-  // The points' equivalent plastic strain at the start of the step, and which points flowed
-  // plastically in the last step (points.vtu's `plastic`).
+  // The points' equivalent plastic strain at the start of the step, by point id, and which
+  // points flowed plastically in the last step (points.vtu's `plastic`), by index.
   std::vector<double> step_start_plastic_strain_;
   std::vector<Index> plastic_;
 };
