@@ -3,10 +3,15 @@
 // PETSc includes MPI without its C++ bindings (which would need libmpi_cxx).
 #include <petscsys.h>
 
+#include <fmt/format.h>
+
 #include <cstdlib>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
+#include "geompm/core/agreement.hpp"
+#include "geompm/core/error.hpp"
 #include "geompm/solver/petsc_session.hpp"
 
 namespace geompm {
@@ -15,6 +20,25 @@ namespace {
 
 void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+// One MPI call carries at most INT_MAX elements, counted and placed by int. The sizes are
+// exchanged as 64-bit numbers first, so that every process sees the same total and all stop
+// together (an error met by all, core/agreement.hpp), with the reason, where a gather would not
+// fit (gathering every point to process 0 for the output can pass 2 GB at millions of points).
+std::vector<int> message_counts(MPI_Comm comm, int size, std::size_t mine, const char* what) {
+  const auto own = static_cast<long long>(mine);
+  std::vector<long long> sizes(static_cast<std::size_t>(size));
+  check(MPI_Allgather(&own, 1, MPI_LONG_LONG, sizes.data(), 1, MPI_LONG_LONG, comm),
+        "MPI_Allgather");
+  const long long total = std::accumulate(sizes.begin(), sizes.end(), 0LL);
+  if (total > std::numeric_limits<int>::max())
+    throw Shared<RunError>(fmt::format(
+        "{} of {:.2f} GB would be gathered in one MPI message, which carries at most {:.2f} GB "
+        "(a distributed run gathers its points to process 0 for the output): run it on fewer "
+        "points, or on one process",
+        what, total / 1e9, std::numeric_limits<int>::max() / 1e9));
+  return {sizes.begin(), sizes.end()};
 }
 
 std::vector<int> displacements(const std::vector<int>& counts) {
@@ -76,9 +100,8 @@ class MpiCommunicator final : public Communicator {
     return split(receive, receive_counts, receive_at);
   }
   std::vector<std::string> all_gather(const std::string& mine) const override {
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(size_);
-    check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_), "MPI_Allgather");
+    const std::vector<int> counts = message_counts(comm_, size_, mine.size(), "data");
+    const int count = counts[static_cast<std::size_t>(rank_)];
     const std::vector<int> at = displacements(counts);
     std::string all(static_cast<std::size_t>(at.back() + counts.back()), '\0');
     check(MPI_Allgatherv(mine.data(), count, MPI_CHAR, all.data(), counts.data(), at.data(),
@@ -87,9 +110,8 @@ class MpiCommunicator final : public Communicator {
     return split(all, counts, at);
   }
   std::vector<std::string> gather(const std::string& mine) const override {
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(size_);
-    check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
+    const std::vector<int> counts = message_counts(comm_, size_, mine.size(), "output");
+    const int count = counts[static_cast<std::size_t>(rank_)];
     const std::vector<int> at = displacements(counts);
     std::string all(rank_ == 0 ? static_cast<std::size_t>(at.back() + counts.back()) : 0, '\0');
     check(MPI_Gatherv(mine.data(), count, MPI_CHAR, all.data(), counts.data(), at.data(), MPI_CHAR,
