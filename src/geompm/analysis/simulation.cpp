@@ -50,7 +50,7 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir) {
 }
 
 StepControlSettings step_control_settings(const spec::TimeStepping& ts) {
-  return {ts.initial, ts.min, ts.max, ts.growth, ts.cutback, ts.easy_iterations};
+  return {ts.initial, ts.min, ts.max, ts.growth, ts.cutback, ts.target_iterations};
 }
 
 Simulation::Simulation(Model& model, const RunOptions& options)

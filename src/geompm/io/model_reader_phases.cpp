@@ -25,7 +25,7 @@ spec::TimeStepping read_time_step(const yaml::Node& node) {
     return step;
   }
   const yaml::Map section =
-      node.map({"initial", "min", "max", "growth", "cutback", "easy_iterations"});
+      node.map({"initial", "min", "max", "growth", "cutback", "target_iterations"});
   const yaml::Node initial = section.required("initial");
   step.initial = read_positive(initial);
   step.max = step.initial;
@@ -49,10 +49,10 @@ spec::TimeStepping read_time_step(const yaml::Node& node) {
     if (!(step.cutback > 0 && step.cutback < 1))
       cutback->fail(fmt::format("expected a factor in (0, 1), found {}", step.cutback));
   }
-  if (auto easy = section.find("easy_iterations")) {
-    step.easy_iterations = easy->integer();
-    if (step.easy_iterations < 1)
-      easy->fail(fmt::format("expected a whole number >= 1, found {}", step.easy_iterations));
+  if (auto target = section.find("target_iterations")) {
+    step.target_iterations = target->integer();
+    if (step.target_iterations < 1)
+      target->fail(fmt::format("expected a whole number >= 1, found {}", step.target_iterations));
   }
   return step;
 }

@@ -1,6 +1,7 @@
 #include "geompm/solver/step_controller.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace geompm {
 
@@ -19,9 +20,10 @@ double StepController::trial_step() const {
 
 void StepController::converged(double dt, int iterations) {
   state_.time += dt;
-  state_.dt = iterations <= settings_.easy_iterations
-                  ? std::min(dt * settings_.growth, settings_.max)
-                  : std::min(dt, settings_.max);
+  const double ratio =
+      static_cast<double>(settings_.target_iterations) / std::max(iterations, 1);
+  const double factor = std::clamp(std::sqrt(ratio), settings_.cutback, settings_.growth);
+  state_.dt = std::min(dt * factor, settings_.max);
 }
 
 bool StepController::failed(double dt) {

@@ -1,8 +1,14 @@
 // The adaptive time step of a phase (docs/user-guide.md, phases.time_step): start at `initial`;
 // after a step that does not converge, retry it with the step cut back by `cutback`, and give up
-// once that falls below `min`; after a step that converges within `easy_iterations` Newton
-// iterations, grow the next by `growth`; never exceed `max`; and never leave a sliver of a step
-// at the end of the phase (a last step under 1 % of the one before is taken with it).
+// once that falls below `min`; after a converged step, scale the next by sqrt(target / n) for a
+// step that took n Newton iterations (docs/theory.md §4.6): steps that converge in fewer than
+// `target_iterations` grow (by at most `growth`), steps that need more shrink (by at most
+// `cutback`) before they fail; never exceed `max`; and never leave a sliver of a step at the end
+// of the phase (a last step under 1 % of the one before is taken with it).
+//
+// The rule is FEBio's automatic time stepper (its "optimal number of iterations"). Newton's
+// iteration count in plastic steps hardly falls with the step, so a rule that grows only after
+// 'easy' steps of a fixed small count never grows back once a plastic run was cut back.
 //
 // Its state (the phase time reached and the step to try next) is two numbers, saved in a
 // checkpoint and restored exactly, so a resumed run takes the same steps as one that never
@@ -17,7 +23,7 @@ struct StepControlSettings {
   double max = 0.0;
   double growth = 1.5;
   double cutback = 0.5;
-  int easy_iterations = 4;
+  int target_iterations = 8;
 };
 
 class StepController {
@@ -35,7 +41,7 @@ class StepController {
   /// The step to try from time(): the next step, shortened to end the phase exactly.
   double trial_step() const;
   /// A step of `dt` converged in `iterations` Newton iterations: time advances, and the next
-  /// step grows if the step was easy (capped at max either way).
+  /// step is dt sqrt(target / iterations), kept within [cutback, growth] times dt and below max.
   void converged(double dt, int iterations);
   /// A step of `dt` did not converge: the next try is cut back. False if that would be below
   /// the smallest allowed step (the run cannot go on).

@@ -58,7 +58,7 @@ point_sets:
 inline const std::string kPhases = R"m(phases:
   - name: gravity
     duration: 1.0
-    time_step: {initial: 0.1, min: 1.0e-4, max: 0.2, growth: 1.5, cutback: 0.5, easy_iterations: 4}
+    time_step: {initial: 0.1, min: 1.0e-4, max: 0.2, growth: 1.5, cutback: 0.5, target_iterations: 4}
     dynamics: quasi_static
     newton: {max_iterations: 15, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}
     gravity: {acceleration: [0, -10], ramp: true}

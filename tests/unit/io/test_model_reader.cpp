@@ -21,8 +21,8 @@ using namespace geompm::testing;
 const std::string& column_model() {
   static const std::string text = apply(
       kValidModel,
-      {{"growth: 1.5, cutback: 0.5, easy_iterations: 4",
-        "growth: 1.25, cutback: 0.25, easy_iterations: 3"},
+      {{"growth: 1.5, cutback: 0.5, target_iterations: 4",
+        "growth: 1.25, cutback: 0.25, target_iterations: 3"},
        {"newton: {max_iterations: 15, residual_tolerance: 1.0e-8, displacement_tolerance: 1.0e-8}",
         "newton: {max_iterations: 12, residual_tolerance: 1.0e-9, displacement_tolerance: 1.0e-7, "
         "tangent_check: 1.0e-6}"},
@@ -115,7 +115,7 @@ TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
   EXPECT_DOUBLE_EQ(gravity.time_step.max, 0.2);
   EXPECT_DOUBLE_EQ(gravity.time_step.growth, 1.25);
   EXPECT_DOUBLE_EQ(gravity.time_step.cutback, 0.25);
-  EXPECT_EQ(gravity.time_step.easy_iterations, 3);
+  EXPECT_EQ(gravity.time_step.target_iterations, 3);
   EXPECT_TRUE(gravity.dynamics.quasi_static);
   EXPECT_EQ(gravity.newton.max_iterations, 12);
   EXPECT_DOUBLE_EQ(gravity.newton.residual_tolerance, 1e-9);
@@ -284,7 +284,7 @@ phases:
   EXPECT_DOUBLE_EQ(phase.time_step.min, 1e-4);  // min to initial / 1000
   EXPECT_DOUBLE_EQ(phase.time_step.growth, default_phase.time_step.growth);
   EXPECT_DOUBLE_EQ(phase.time_step.cutback, default_phase.time_step.cutback);
-  EXPECT_EQ(phase.time_step.easy_iterations, default_phase.time_step.easy_iterations);
+  EXPECT_EQ(phase.time_step.target_iterations, default_phase.time_step.target_iterations);
   EXPECT_TRUE(phase.dynamics.quasi_static);
   EXPECT_EQ(phase.newton.max_iterations, default_phase.newton.max_iterations);
   EXPECT_DOUBLE_EQ(phase.newton.residual_tolerance, default_phase.newton.residual_tolerance);

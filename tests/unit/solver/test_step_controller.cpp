@@ -1,10 +1,11 @@
 // The adaptive time step (solver/step_controller): the step sequences it gives for scripted
-// Newton outcomes, worked out by hand; the same sequence as the loop it replaced in run_analysis
-// (kept below, verbatim in its arithmetic, as the reference) over many random outcomes; and a
-// controller restored from another's saved state takes exactly the same steps.
+// Newton outcomes, worked out by hand; the same sequence as a loop written out below from the
+// rule (docs/theory.md §4.6) over many random outcomes; and a controller restored from another's
+// saved state takes exactly the same steps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -18,7 +19,7 @@ StepControlSettings settings(double initial, double min, double max) {
   s.initial = initial;
   s.min = min;
   s.max = max;
-  return s;  // growth 1.5, cutback 0.5, easy_iterations 4
+  return s;  // growth 1.5, cutback 0.5, target_iterations 8
 }
 
 // Runs the controller to the phase's end with every step converging in `iterations`; returns
@@ -49,11 +50,39 @@ TEST(StepController, GrowsAfterEasyStepsUpToItsMaximum) {
   EXPECT_TRUE(control.finished());
 }
 
-TEST(StepController, KeepsTheStepAfterHardSteps) {
+TEST(StepController, KeepsTheStepAtTheTargetCount) {
   StepController control(settings(0.2, 0.01, 0.5), 1.0);
-  const std::vector<double> steps = converged_steps(control, 5);  // above easy_iterations
+  const std::vector<double> steps = converged_steps(control, 8);  // the target
   ASSERT_EQ(steps.size(), 5u);
   for (double dt : steps) EXPECT_NEAR(dt, 0.2, 1e-15);
+}
+
+TEST(StepController, ScalesTheStepByTheSquareRootOfTheIterationRatio) {
+  StepController grows(settings(0.1, 0.001, 1.0), 10.0);
+  grows.converged(grows.trial_step(), 6);
+  EXPECT_DOUBLE_EQ(grows.trial_step(), 0.1 * std::sqrt(8.0 / 6.0));
+  StepController shrinks(settings(0.1, 0.001, 1.0), 10.0);
+  shrinks.converged(shrinks.trial_step(), 15);
+  EXPECT_DOUBLE_EQ(shrinks.trial_step(), 0.1 * std::sqrt(8.0 / 15.0));
+  StepController at_most_cutback(settings(0.1, 0.001, 1.0), 10.0);
+  at_most_cutback.converged(at_most_cutback.trial_step(), 100);  // sqrt(0.08) < 0.5
+  EXPECT_DOUBLE_EQ(at_most_cutback.trial_step(), 0.05);
+}
+
+// Issue 45: plastic steps take 6-8 Newton iterations whatever their size, and a rule that grew
+// only after steps of at most 4 never grew back after a cut-back.
+TEST(StepController, APlasticRunGrowsBackToItsMaximumAfterACutBack) {
+  StepController control(settings(0.4, 0.001, 0.4), 100.0);
+  ASSERT_TRUE(control.failed(control.trial_step()));
+  ASSERT_TRUE(control.failed(control.trial_step()));
+  ASSERT_DOUBLE_EQ(control.trial_step(), 0.1);
+  int steps = 0;
+  while (control.trial_step() < 0.4 && steps < 100) {
+    control.converged(control.trial_step(), 7);
+    ++steps;
+  }
+  // 0.1 (8/7)^(n/2) >= 0.4 for n >= 2 ln 4 / ln(8/7) = 20.8.
+  EXPECT_EQ(steps, 21);
 }
 
 TEST(StepController, TakesASliverWithTheLastStep) {
@@ -80,13 +109,13 @@ TEST(StepController, CutsBackUntilBelowTheMinimum) {
 TEST(StepController, GrowsAgainAfterACutBack) {
   StepController control(settings(0.4, 0.01, 0.4), 1.0);
   ASSERT_TRUE(control.failed(control.trial_step()));
-  control.converged(control.trial_step(), 2);  // 0.2, easy
+  control.converged(control.trial_step(), 2);  // 0.2, grows by at most 1.5
   EXPECT_EQ(control.time(), 0.2);
   EXPECT_DOUBLE_EQ(control.trial_step(), 0.3);
 }
 
-// The loop run_analysis had before the controller (commit fa2d2d1), with its arithmetic kept
-// exactly: the controller must give the same step sequence, bit for bit.
+// The rule written out as one loop (the shape of the loop run_analysis had before the controller,
+// commit fa2d2d1): the controller must give the same step sequence, bit for bit.
 struct Outcome {
   bool converged;
   int iterations;
@@ -108,10 +137,9 @@ std::vector<double> reference_steps(const StepControlSettings& ts, double durati
       continue;
     }
     t += dt_try;
-    if (o.iterations <= ts.easy_iterations)
-      dt = std::min(dt_try * ts.growth, ts.max);
-    else
-      dt = std::min(dt_try, ts.max);
+    double factor = std::sqrt(double(ts.target_iterations) / std::max(o.iterations, 1));
+    factor = std::min(std::max(factor, ts.cutback), ts.growth);
+    dt = std::min(dt_try * factor, ts.max);
   }
   return tried;
 }
@@ -134,9 +162,9 @@ std::vector<double> controller_steps(const StepControlSettings& ts, double durat
   return tried;
 }
 
-TEST(StepController, TakesTheStepsOfTheLoopItReplaced) {
+TEST(StepController, TakesTheStepsOfItsRuleOverRandomOutcomes) {
   std::mt19937 random(20261127);
-  std::uniform_int_distribution<int> iterations(1, 9);
+  std::uniform_int_distribution<int> iterations(0, 15);
   std::bernoulli_distribution fails(0.2);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int compared = 0;
@@ -147,7 +175,7 @@ TEST(StepController, TakesTheStepsOfTheLoopItReplaced) {
     ts.min = ts.initial * 1e-3;
     ts.growth = 1.0 + unit(random);
     ts.cutback = 0.2 + 0.6 * unit(random);
-    ts.easy_iterations = 2 + trial % 5;
+    ts.target_iterations = 2 + trial % 12;
     const double duration = 0.5 + 3.0 * unit(random);
     std::vector<Outcome> outcomes(400);
     for (Outcome& o : outcomes) o = {!fails(random), iterations(random)};
