@@ -272,6 +272,12 @@ std::size_t rate_index(const UnknownAt& at, int dim) {
 }
 }  // namespace
 
+double StepSolver::full_step_increment(double max_step) const {
+  double sum = 0.0;
+  for (const double rate : last_rate_) sum += rate * rate;
+  return std::sqrt(sum) * max_step;
+}
+
 bool StepSolver::extrapolated_start(double dt, Vector& x) const {
   if (last_rate_.empty()) return false;
   const DofMap& dofs = system_->dofs();
@@ -408,6 +414,7 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepRes
   settings.max_halvings = phase.spec->newton.line_search;
   settings.energy_search = phase.spec->newton.energy_line_search;
   settings.tangent_check = phase.spec->newton.tangent_check;
+  settings.increment_floor = full_step_increment(phase.spec->time_step.max);
   // Newton starts from a zero increment, or from the last step's extrapolated: the plastic zone
   // and its flow are then in place from the first iterate, so fewer points switch between
   // elastic and plastic in the iterations. Where that start fails (an inadmissible iterate, or
@@ -467,7 +474,9 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepRes
 void StepSolver::finish(PhaseContext& phase, double dt, Step& step, StepResult& result) {
   const DofMap& dofs = system_->dofs();
   result.displacement = step.du;
-  if (phase.spec->newton.extrapolate) remember_increment(step.du, dt);
+  // Its rate starts the next step with the extrapolated predictor and scales the corrections of
+  // a cut-back step (full_step_increment).
+  remember_increment(step.du, dt);
   if (const Inertia* inertia = system_->find<Inertia>()) {
     result.acceleration = inertia->acceleration(step.du);
     result.velocity = inertia->velocity(result.acceleration);

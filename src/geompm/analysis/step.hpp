@@ -107,6 +107,9 @@ class StepSolver {
   struct Step;
   void set_up(PhaseContext& phase, double t0, double dt, Step& step);
   void constrain(const PhaseContext& phase, double t0, double t1, Step& step) const;
+  /// The increment the last converged step's rate gives over the phase's largest step (0 at a
+  /// phase's first step): the scale of a cut-back step's corrections (docs/theory.md eq. 4.5).
+  double full_step_increment(double max_step) const;
   bool solve(const PhaseContext& phase, double dt, Step& step, StepResult& result);
   void finish(PhaseContext& phase, double dt, Step& step, StepResult& result);
   bool extrapolated_start(double dt, Vector& x) const;

@@ -24,9 +24,10 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
   double eta = -1.0;  // the forcing term of the last solve (none yet)
   ForcingSettings forcing = settings.forcing;
   forcing.floor = settings.linear_tolerance;
-  // The size of a correction relative to the step's increment at x.
-  const auto relative_to_increment = [&problem, &x](const Vector& correction) {
-    const double scale = problem.increment_norm(x);
+  // The size of a correction relative to the step's increment at x, or to a full step's where
+  // the step was cut back below it (eq. 4.5).
+  const auto relative_to_increment = [&problem, &x, &settings](const Vector& correction) {
+    const double scale = std::max(problem.increment_norm(x), settings.increment_floor);
     return scale > 0 ? correction.norm() / scale : 0.0;
   };
   // The correction the current residual asks for, against the operator of the last setup (for a

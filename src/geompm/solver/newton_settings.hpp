@@ -22,6 +22,9 @@ struct NewtonSettings {
   int patience = 0;
   double residual_tolerance = 1e-8;
   double displacement_tolerance = 1e-8;
+  /// The correction is judged relative to the larger of the step's increment and this norm
+  /// (docs/theory.md eq. 4.5): the increment a full step would have (0: the step's own).
+  double increment_floor = 0.0;
   double divergence_factor =
       1e8;  // residual growth over the first residual that counts as divergence
   /// Backtracking: a correction that makes the residual grow, or turns a point inside out, is

@@ -1,14 +1,15 @@
 // The adaptive time step of a phase (docs/user-guide.md, phases.time_step): start at `initial`;
 // after a step that does not converge, retry it with the step cut back by `cutback`, and give up
-// once that falls below `min`; after a converged step, scale the next by sqrt(target / n) for a
-// step that took n Newton iterations (docs/theory.md §4.6): steps that converge in fewer than
-// `target_iterations` grow (by at most `growth`), steps that need more shrink (by at most
-// `cutback`) before they fail; never exceed `max`; and never leave a sliver of a step at the end
+// once that falls below `min`; after a converged step that took n Newton iterations, grow the
+// next by sqrt(target / n) where n < `target_iterations` (by at most `growth`, docs/theory.md
+// §4.6) and keep it otherwise; never exceed `max`; and never leave a sliver of a step at the end
 // of the phase (a last step under 1 % of the one before is taken with it).
 //
-// The rule is FEBio's automatic time stepper (its "optimal number of iterations"). Newton's
+// The growth is FEBio's automatic time stepper (its "optimal number of iterations"). Newton's
 // iteration count in plastic steps hardly falls with the step, so a rule that grows only after
-// 'easy' steps of a fixed small count never grows back once a plastic run was cut back.
+// 'easy' steps of a fixed small count never grows back once a plastic run was cut back; and a
+// converged step is not shortened, for the same reason: where points switching between plastic
+// states set the count, a shorter step takes as many iterations and the run only slows down.
 //
 // Its state (the phase time reached and the step to try next) is two numbers, saved in a
 // checkpoint and restored exactly, so a resumed run takes the same steps as one that never
@@ -41,7 +42,7 @@ class StepController {
   /// The step to try from time(): the next step, shortened to end the phase exactly.
   double trial_step() const;
   /// A step of `dt` converged in `iterations` Newton iterations: time advances, and the next
-  /// step is dt sqrt(target / iterations), kept within [cutback, growth] times dt and below max.
+  /// step is dt sqrt(target / iterations), kept within [1, growth] times dt and below max.
   void converged(double dt, int iterations);
   /// A step of `dt` did not converge: the next try is cut back. False if that would be below
   /// the smallest allowed step (the run cannot go on).
