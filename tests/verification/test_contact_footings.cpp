@@ -96,11 +96,11 @@ TEST(ContactFootings, SmoothAndRoughRigidStripsCarryPrandtlsLoad) {
 
 TEST(ContactFootings, RigidCirclesOnDOver20ComeWithinTheMeshsOverEstimate) {
   // Axisymmetric, per radian: q / s_u = 8 x force (D = 1). Measured over 0.08-0.1 D: rough
-  // +0.9 % from 6.05, smooth +0.6 % from 5.69 (docs/validation.md §17), above N_c: the
-  // axisymmetric mechanism on h = D/20 over-estimates it, as the steel block of §7 and the former
-  // penalty footings showed (+6.9 % to +18.2 %). The value at 0.1 D itself is one step of a curve
-  // that swings by 3-5 % as points cross cells under the edge (rough 6.02, smooth 5.49): held to
-  // the target of 5 % either way, the mean to the over-estimate.
+  // 6.20 (+2.5 % from 6.05), smooth 5.74 (+0.9 % from 5.69) (docs/validation.md §17), above N_c:
+  // the axisymmetric mechanism on h = D/20 over-estimates it, as the steel block of §7 and the
+  // former penalty footings showed (+6.9 % to +18.2 %). The value at 0.1 D itself is one step of a
+  // curve that swings by 3-5 % as points cross cells under the edge (rough 6.02, smooth 5.49): held
+  // to the target of 5 % either way, the mean to the over-estimate.
   const Curve smooth = reference_curve("circular_footing_smooth", 8.0);
   const Curve rough = reference_curve("circular_footing_rough", 8.0);
   constexpr double kSmooth = 5.69, kRough = 6.05;
