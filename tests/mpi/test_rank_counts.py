@@ -10,16 +10,13 @@ the same history.
 
 Environment: GEOMPM_BINARY (the geompm executable), GEOMPM_MPIRUN (mpirun).
 """
-import csv
 import os
 import shutil
-import subprocess
 import tempfile
 import unittest
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-BINARY = os.environ.get("GEOMPM_BINARY", os.path.join(ROOT, "build", "geompm"))
-MPIRUN = os.environ.get("GEOMPM_MPIRUN", "mpirun")
+from runs import ROOT, history, run
+
 TOLERANCE = 1e-6
 
 EXAMPLES = [
@@ -37,24 +34,6 @@ EXAMPLES = [
     "structures/strip_footing_rough.yaml",  # a rough rigid footing on mixed p-u clay
     "structures/deformable_pile.yaml",  # a deformable structure in contact
 ]
-
-
-def run(model, output, processes, *extra, env=None):
-    command = [BINARY, "run", os.path.join(ROOT, "examples", model), "-o", output, "--quiet"]
-    if processes > 1:
-        command = [MPIRUN, "--oversubscribe", "-np", str(processes)] + command
-    environment = dict(os.environ, OMP_NUM_THREADS="1")
-    environment.update(env or {})
-    return subprocess.run(command + list(extra), capture_output=True, text=True, env=environment,
-                          timeout=900)
-
-
-def history(output):
-    with open(os.path.join(output, "history.csv")) as f:
-        rows = list(csv.reader(f))
-    columns = rows[0]
-    values = [[float(v) for v in row] for row in rows[1:]]
-    return columns, values
 
 
 class RankCounts(unittest.TestCase):
