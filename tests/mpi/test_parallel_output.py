@@ -55,12 +55,18 @@ class ParallelOutput(unittest.TestCase):
                                      f"{label}: {name} differs by {worst:.3g} (scale {scale:.3g})")
         return got, piece
 
-    def assert_series_in_pieces(self, model, processes, expect=0):
-        """Every file of the serial run's points.pvd, at the same times, in pieces."""
+    def assert_series_in_pieces(self, model, processes, expect=0, names=("points.pvd",)):
+        """Every file of the serial run's series (points.pvd), at the same times, in pieces."""
         serial = self.run_on(model, 1, expect)
         output = self.run_on(model, processes, expect)
-        expected, written = series(serial), series(output)
-        self.assertEqual([t for t, _ in written], [t for t, _ in expected], "the series' times")
+        pieces = []
+        for name in names:
+            pieces += self.assert_same_series(serial, output, name, processes)
+        return pieces
+
+    def assert_same_series(self, serial, output, name, processes):
+        expected, written = series(serial, name), series(output, name)
+        self.assertEqual([t for t, _ in written], [t for t, _ in expected], f"{name}'s times")
         pieces = []
         for (_, a), (_, b) in zip(expected, written):
             # The pieces are named by the process that wrote them, beside the .pvtu.
@@ -81,6 +87,13 @@ class ParallelOutput(unittest.TestCase):
             self.assertGreater((first_piece != last_piece).sum(), 0, "points changed process")
             self.assertGreater(last["plastic"].sum(), 0, "plastic points at the end")
 
+    def test_the_fem_regions_gauss_points_in_pieces(self):
+        # The coupled strip footing on 3 processes: the FEM region's cells are shared out by
+        # their Gauss points, and each process writes those of its cells (gauss_points.pvd).
+        pieces = self.assert_series_in_pieces("coupling/strip_footing_coupled.yaml", 3,
+                                              names=("points.pvd", "gauss_points.pvd"))
+        self.assertGreater(len(np.unique(pieces[-1][1])), 1, "Gauss points on several processes")
+
     def test_a_stopped_run_writes_its_last_state_in_pieces(self):
         # The oedometer's top pulled up out of the mesh: its points leave the mesh at the 7th step
         # (lost_points: stop), and the run stops with the 6th, which ParaView output every 4th
@@ -91,7 +104,7 @@ class ParallelOutput(unittest.TestCase):
         with open(model, "w") as f:
             f.write(text)
         self.assert_series_in_pieces(model, 2, expect=3)
-        written = series(os.path.join(self.dir, "np2"))
+        written = series(os.path.join(self.dir, "np2"), "points.pvd")
         self.assertEqual(written[-1], (0.6, "vtk/points_000006.pvtu"))
 
 

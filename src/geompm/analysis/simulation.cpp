@@ -97,6 +97,7 @@ void Simulation::distribute_points() {
   if (!processes_.distributed()) return;
   std::vector<int> cell_part = partition_by_points(model_, processes_.size());
   keep_own_points(model_.points, cell_part, processes_.rank());
+  if (model_.fem) model_.fem->keep_own(cell_part, processes_.rank());
   stepper_.distribute(processes_, std::move(cell_part));
 }
 
@@ -354,9 +355,10 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   last_checkpoint_ = Clock::now();
 }
 
-// In the serial format, whatever the number of processes: every point on process 0, which
-// writes it.
+// In the serial format, whatever the number of processes: every point and Gauss point on
+// process 0, which writes it.
 void Simulation::write_checkpoint() {
+  if (model_.fem) gather_fem_region(*model_.fem, processes_);
   with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
 }
 
