@@ -12,6 +12,7 @@ packages=(
   libpetsc-real-dev      # Krylov solvers with GAMG, hypre BoomerAMG and MUMPS for large models (issue 44);
                          # brings OpenMPI
   openmpi-bin            # mpirun: distributed runs and their tests (ctest -L mpi)
+  libptscotch-dev        # PT-Scotch, against which bench/bench_partition measures the mesh's cut
   libopenblas0-openmp    # optimised BLAS under UMFPACK (x2.5-7 on the factorisation, docs/performance.md);
                          # the OpenMP build shares our threads instead of spinning its own
   libyaml-cpp-dev        # model files (YAML, with line numbers for errors)

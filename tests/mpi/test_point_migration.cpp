@@ -11,12 +11,10 @@
 #include "geompm/mesh/partition.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
 #include "geompm/points/point_exchange.hpp"
-#include "geompm/solver/petsc_communicator.hpp"
+#include "mpi_world.hpp"
 
 namespace geompm {
 namespace {
-
-const Communicator* world = nullptr;
 
 // Four points per cell of a 12 x 6 block, point i of mass 1 + i / 1000.
 MaterialPoints seed(const Mesh& mesh) {
@@ -39,13 +37,14 @@ Mesh block() {
 }
 
 void expect_whole(const MaterialPoints& points, const std::vector<int>& part, Index expected) {
-  for (Index p = 0; p < points.size(); ++p) EXPECT_EQ(part[points.cell[p]], world->rank());
-  EXPECT_EQ(world->sum(points.size()), expected);
+  for (Index p = 0; p < points.size(); ++p)
+    EXPECT_EQ(part[points.cell[p]], testing::world().rank());
+  EXPECT_EQ(testing::world().sum(points.size()), expected);
   double mass = std::accumulate(points.mass.begin(), points.mass.end(), 0.0);
-  world->sum(&mass, 1);
+  testing::world().sum(&mass, 1);
   EXPECT_NEAR(mass, expected + (expected - 1) * expected / 2 / 1000.0, 1e-9);
-  const MaterialPoints all = gather_points(points, *world);
-  if (world->rank() != 0) return;
+  const MaterialPoints all = gather_points(points, testing::world());
+  if (testing::world().rank() != 0) return;
   ASSERT_EQ(all.size(), expected);
   for (Index p = 0; p < all.size(); ++p) {
     EXPECT_EQ(all.id[p], p);  // ordered by id: each once
@@ -54,13 +53,13 @@ void expect_whole(const MaterialPoints& points, const std::vector<int>& part, In
 }
 
 TEST(PointMigration, EachProcessHoldsThePointsOfItsCells) {
-  ASSERT_GE(world->size(), 2) << "run under mpirun with 2 or more processes";
+  ASSERT_GE(testing::world().size(), 2) << "run under mpirun with 2 or more processes";
   const Mesh mesh = block();
   MaterialPoints points = seed(mesh);
   const Index n = points.size();
   std::vector<double> weight(mesh.num_cells(), 4.0);
-  const std::vector<int> part = partition_cells(mesh, weight, world->size());
-  keep_own_points(points, part, world->rank());
+  const std::vector<int> part = partition_cells(mesh, weight, testing::world().size());
+  keep_own_points(points, part, testing::world().rank());
   EXPECT_GT(points.size(), 0);
   expect_whole(points, part, n);
 
@@ -70,11 +69,11 @@ TEST(PointMigration, EachProcessHoldsThePointsOfItsCells) {
   for (Index p = 0; p < points.size(); ++p) {
     points.cell[p] = (points.cell[p] + 2 * 12 + 6) % mesh.num_cells();
     points.position[p].x() += 1.0;
-    leaving += part[points.cell[p]] != world->rank();
+    leaving += part[points.cell[p]] != testing::world().rank();
   }
-  const Index sent = migrate_points(points, part, *world);
+  const Index sent = migrate_points(points, part, testing::world());
   EXPECT_EQ(sent, leaving);
-  EXPECT_GT(world->sum(sent), n / 2);
+  EXPECT_GT(testing::world().sum(sent), n / 2);
   expect_whole(points, part, n);
   // The state travelled with the point: its position still says where it was seeded + 1.
   for (Index p = 0; p < points.size(); ++p)
@@ -85,25 +84,12 @@ TEST(PointMigration, NothingMovesWhenNoPointChangesProcess) {
   const Mesh mesh = block();
   MaterialPoints points = seed(mesh);
   const std::vector<int> part =
-      partition_cells(mesh, std::vector<double>(mesh.num_cells(), 4.0), world->size());
-  keep_own_points(points, part, world->rank());
+      partition_cells(mesh, std::vector<double>(mesh.num_cells(), 4.0), testing::world().size());
+  keep_own_points(points, part, testing::world().rank());
   const std::vector<Index> ids = points.id;
-  EXPECT_EQ(world->sum(migrate_points(points, part, *world)), 0);
+  EXPECT_EQ(testing::world().sum(migrate_points(points, part, testing::world())), 0);
   EXPECT_EQ(points.id, ids);
 }
 
 }  // namespace
 }  // namespace geompm
-
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  auto communicator = geompm::mpi_world_communicator("");
-  geompm::world = communicator.get();
-  // Only process 0 reports; every process runs every test (the collectives need all of them).
-  if (communicator->rank() != 0)
-    delete ::testing::UnitTest::GetInstance()->listeners().Release(
-        ::testing::UnitTest::GetInstance()->listeners().default_result_printer());
-  const int failed = RUN_ALL_TESTS();
-  // A failure on any process fails the run.
-  return communicator->all(failed == 0) ? 0 : 1;
-}

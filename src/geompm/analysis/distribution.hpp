@@ -2,7 +2,7 @@
 // (docs/architecture.md, "Distributed runs"; docs/user-guide.md, "Running on several processes").
 // The mesh and the grid are replicated on every process; the cells are cut into one part per
 // process (mesh/partition.hpp) by the points they hold when the run starts or resumes, and each
-// process keeps the points of its cells.
+// process keeps the points of its cells and works on the FEM region's cells it owns.
 #pragma once
 
 #include <vector>
@@ -13,11 +13,15 @@
 namespace geompm {
 
 /// Throws InputError naming the model file and every feature of the model that a distributed
-/// run does not handle yet (FEM regions, the tangent check), so that none is ever run wrongly.
+/// run does not handle yet (the tangent check), so that none is ever run wrongly.
 void check_distributable(const Model& model, int processes);
 
-/// Per mesh cell, the process that owns it: the cells cut by the points they hold (every
-/// process must hold every point, as built or read from a checkpoint).
+/// Per mesh cell, the process that owns it: the cells cut by the points they hold, an FEM cell by
+/// its Gauss points (every process must hold every point, as built or read from a checkpoint).
 std::vector<int> partition_by_points(const Model& model, int processes);
+
+/// The FEM region's Gauss points of every process (each keeps those of its own cells up to
+/// date) into process 0's store, for a checkpoint. Collective.
+void gather_fem_region(FemRegion& region, const Communicator& processes);
 
 }  // namespace geompm

@@ -63,11 +63,12 @@ int Model::point_set_bit(const std::string& name) const {
 
 namespace {
 
-/// The reference moduli of the materials some point carries: a material only listed (or whose
-/// points have all left the mesh) sets no scale.
-std::vector<double> carried_moduli(const Model& model) {
-  std::vector<char> carried(model.materials.size(), 0);
+/// The reference moduli of the materials some point of some process carries: a material only
+/// listed (or whose points have all left the mesh) sets no scale.
+std::vector<double> carried_moduli(const Model& model, const Communicator& processes) {
+  std::vector<int> carried(model.materials.size(), 0);
   for (const Index m : model.points.material) carried[static_cast<std::size_t>(m)] = 1;
+  processes.max(carried.data(), carried.size());
   std::vector<double> moduli;
   for (std::size_t m = 0; m < model.materials.size(); ++m)
     if (carried[m]) moduli.push_back(model.materials[m]->reference_modulus());
@@ -76,13 +77,13 @@ std::vector<double> carried_moduli(const Model& model) {
 
 }  // namespace
 
-double Model::largest_modulus() const {
-  const std::vector<double> moduli = carried_moduli(*this);
+double Model::largest_modulus(const Communicator& processes) const {
+  const std::vector<double> moduli = carried_moduli(*this, processes);
   return moduli.empty() ? 0.0 : *std::max_element(moduli.begin(), moduli.end());
 }
 
-double Model::softest_modulus() const {
-  const std::vector<double> moduli = carried_moduli(*this);
+double Model::softest_modulus(const Communicator& processes) const {
+  const std::vector<double> moduli = carried_moduli(*this, processes);
   return moduli.empty() ? 0.0 : *std::min_element(moduli.begin(), moduli.end());
 }
 

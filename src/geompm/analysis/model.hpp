@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geompm/contact/contact_pair.hpp"
+#include "geompm/core/communicator.hpp"
 #include "geompm/coupling/fem_region.hpp"
 #include "geompm/materials/material.hpp"
 #include "geompm/mesh/mesh.hpp"
@@ -56,12 +57,13 @@ struct Model {
   std::vector<const Material*> material_pointers() const;
   int point_set_bit(const std::string& name) const;  // -1 if unknown
   /// The largest reference modulus of the materials the points carry (the scale of contact's
-  /// multipliers).
-  double largest_modulus() const;
+  /// multipliers). In a distributed run, pass its processes: the points of every process count
+  /// (collective), not only this process's.
+  double largest_modulus(const Communicator& processes = serial_communicator()) const;
   /// The smallest reference modulus of the materials the points carry: the soil's, the scale of
   /// the empty cells' and sparse nodes' stiffness (a steel block among the points must not
-  /// stiffen the empty cells beside the soil).
-  double softest_modulus() const;
+  /// stiffen the empty cells beside the soil). `processes` as for largest_modulus.
+  double softest_modulus(const Communicator& processes = serial_communicator()) const;
 };
 
 /// The material (index into spec.materials) of `body` at `elevation` (y in 2D, z in 3D): its one

@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 
 bool written_by_a_run(const fs::path& file, bool in_vtk_folder) {
   const std::string name = file.filename().string(), ext = file.extension().string();
-  if (in_vtk_folder) return ext == ".vtu" || ext == ".vtp";
+  if (in_vtk_folder) return ext == ".vtu" || ext == ".vtp" || ext == ".pvtu";
   static const std::array<const char*, 5> names = {"history.csv", "newton.csv", "summary.json",
                                                    "checkpoint.bin", "checkpoint.bin.tmp"};
   return ext == ".vtu" || ext == ".vtp" || ext == ".pvd" || ext == ".png" ||

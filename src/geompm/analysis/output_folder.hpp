@@ -9,8 +9,8 @@
 namespace geompm {
 
 /// Removes from `dir` the files a geompm run writes: *.vtu, *.vtp, *.pvd, *.png, history.csv,
-/// newton.csv, summary.json, checkpoint.bin (and its temporary), and the *.vtu / *.vtp of
-/// `dir`/vtk. Nothing else: other files stay, and a folder that holds no sign of a geompm run
+/// newton.csv, summary.json, checkpoint.bin (and its temporary), and the *.vtu / *.vtp / *.pvtu
+/// of `dir`/vtk. Nothing else: other files stay, and a folder that holds no sign of a geompm run
 /// (history.csv, summary.json, points.pvd or checkpoint.bin) is left as it is. Returns the
 /// files removed.
 std::vector<std::filesystem::path> remove_previous_run(const std::filesystem::path& dir);

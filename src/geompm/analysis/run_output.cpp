@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 
 #include "geompm/analysis/output_fields.hpp"
 #include "geompm/core/error.hpp"
@@ -79,7 +77,6 @@ OutputWriter::OutputWriter(Model& model, const std::filesystem::path& dir,
                      : HistoryWriter(dir / "newton.csv", newton_columns)) {
   for (const auto& structure : model.structures)
     structure_series_.emplace_back(dir / ("structure_" + structure->name() + ".pvd"));
-  step_start_plastic_strain_ = equivalent_plastic_strain(model);
   if (!resume) return;
   points_series_.restore(std::move(resume->points));
   grid_series_.restore(std::move(resume->grid));
@@ -133,29 +130,25 @@ void OutputWriter::newton_log(int step_number, double time, double dt, const Ste
 }
 
 void OutputWriter::initial() {
-  if (model_.spec.output.vtk_every > 0) {  // vtk: {every: 0} writes no ParaView file at all
-    write_points(0.0, 0);
-    write_structures(0.0, 0);
-  }
+  // vtk: {every: 0} writes no ParaView file at all
+  if (model_.spec.output.vtk_every > 0) write_structures(0.0, 0);
   append_history(recorder_.initial_values(model_));
 }
 
-// The points (and structures) as the last converged step left them, unless that step wrote them
-// already: a run that stops between two ParaView steps still shows where it stopped.
-void OutputWriter::last_state(double time, int step_number) {
-  if (model_.spec.output.vtk_every <= 0) return;
+void OutputWriter::list_points(double time, const std::string& points, const std::string& gauss) {
+  points_series_.add(time, points);
+  if (!gauss.empty()) gauss_series_.add(time, gauss);
+}
+
+bool OutputWriter::lists_points(const std::string& points) const {
   const auto& written = points_series_.entries();
-  if (!written.empty() && written.back().second == points_file(step_number)) return;
-  write_points(time, step_number);
-  write_structures(time, step_number);
+  return !written.empty() && written.back().second == points;
 }
 
 void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseContext& phase,
                         double phase_time, double time, int step_number, double dt, bool vtk) {
   append_history(recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt));
-  find_plastic_points();
   if (!vtk) return;
-  write_points(time, step_number);
   write_structures(time, step_number);
   if (model_.spec.output.vtk_grid) {
     FieldSet nodes, cells;
@@ -222,45 +215,6 @@ void OutputWriter::append_history(const std::vector<double>& values) {
   for (const double v : values)
     last_values_.push_back(std::strtod(fmt::format("{:.10g}", v).c_str(), nullptr));
 }
-
-std::string OutputWriter::points_file(int step_number) {
-  return fmt::format("vtk/points_{:06d}.vtu", step_number);
-}
-
-// A point flowed plastically in the step if its equivalent plastic strain grew. A step that lost
-// points (numerics.lost_points: remove) flags none.
-// By the points' ids: the points are reordered by cell every step (and lost ones removed), so
-// a point's index at the step's start is not its index now.
-void OutputWriter::find_plastic_points() {
-  const std::vector<double> now = equivalent_plastic_strain(model_);
-  const std::vector<Index>& id = model_.points.id;
-  plastic_.assign(now.size(), 0);
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    const auto k = static_cast<std::size_t>(id[i]);
-    plastic_[i] = k < step_start_plastic_strain_.size() && now[i] > step_start_plastic_strain_[k];
-  }
-  const Index largest_id = id.empty() ? -1 : *std::max_element(id.begin(), id.end());
-  step_start_plastic_strain_.assign(static_cast<std::size_t>(largest_id + 1),
-                                    std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < now.size(); ++i)
-    step_start_plastic_strain_[static_cast<std::size_t>(id[i])] = now[i];
-}
-
-void OutputWriter::write_points(double time, int step_number) {
-  const std::string name = points_file(step_number);
-  write_vtu_points(dir_ / name, model_.points.position, point_fields(model_, plastic_));
-  points_series_.add(time, name);
-  if (!model_.fem) return;
-  // The FEM region's Gauss points (docs/theory.md §19.1), with the points' fields, beside them.
-  const std::string gauss = fmt::format("vtk/gauss_points_{:06d}.vtu", step_number);
-  const MaterialPoints& g = model_.fem->gauss_points();
-  write_vtu_points(dir_ / gauss, g.position, point_fields(model_, g, {}));
-  gauss_series_.add(time, gauss);
-}
-
-}  // namespace geompm
-
-namespace geompm {
 
 // Each structure's mesh where it is, with its displacement since the start of the analysis.
 void OutputWriter::write_structures(double time, int step_number) {

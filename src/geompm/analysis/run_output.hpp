@@ -1,7 +1,8 @@
 // What a run writes as it goes, into its output directory: the history (history.csv), every
 // Newton iteration (newton.csv), the ParaView series of the points and the grid (points.pvd,
-// grid.pvd, structure_<name>.pvd per structure, vtk/*.vtu), with surface loads the boundary's
-// (boundary.pvd, vtk/*.vtp) and, at the end, the plots. Everything is flushed step by step, so a
+// grid.pvd, structure_<name>.pvd per structure, vtk/*.vtu; the points' files themselves are
+// point_output.hpp's), with surface loads the boundary's (boundary.pvd, vtk/*.vtp) and, at the
+// end, the plots. Process 0 of a distributed run holds it. Everything is flushed step by step, so a
 // run that stops keeps every finished step; a resumed run goes on with the files as they were at
 // its checkpoint (save() / the resuming constructor).
 #pragma once
@@ -35,14 +36,18 @@ class OutputWriter {
 
   /// Every Newton attempt, converged or cut back: one row per iteration in newton.csv.
   void newton_log(int step_number, double time, double dt, const StepResult& step);
-  /// The initial state (step 0): the points' series and the history's first row.
+  /// The initial state (step 0): the structures' ParaView files and the history's first row.
   void initial();
-  /// A converged step: its history row and, if `vtk`, its ParaView files.
+  /// A converged step: its history row and, if `vtk`, its ParaView files but the points'.
   void step(GridSystem& grid, const StepResult& step, const PhaseContext& phase, double phase_time,
             double time, int step_number, double dt, bool vtk);
-  /// A stopped run: the points' (and structures') ParaView files of the last converged step, if
-  /// the step did not write them (nothing with vtk: {every: 0}).
-  void last_state(double time, int step_number);
+  /// The points' files of a step (PointOutput::Files: the points', the Gauss points' or empty),
+  /// written: they join the series.
+  void list_points(double time, const std::string& points, const std::string& gauss);
+  /// Whether the points' series ends with `points` (the last step's file was written).
+  bool lists_points(const std::string& points) const;
+  /// Each structure's ParaView file of a step (with vtk output).
+  void write_structures(double time, int step_number);
   /// Draws the plots the model asks for; returns the files written.
   std::vector<std::filesystem::path> plots();
 
@@ -62,11 +67,7 @@ class OutputWriter {
   static Positions read_positions(ByteReader& saved, const std::filesystem::path& dir,
                                   bool boundary);
   OutputWriter(Model& model, const std::filesystem::path& dir, std::optional<Positions> resume);
-  static std::string points_file(int step_number);  // relative to the output directory
   void append_history(const std::vector<double>& values);
-  void find_plastic_points();
-  void write_points(double time, int step_number);
-  void write_structures(double time, int step_number);
   void write_boundary(const StepResult& step, double time, int step_number);
 
   Model& model_;
@@ -79,10 +80,6 @@ class OutputWriter {
   HistoryWriter history_;
   HistoryWriter newton_;
   std::vector<double> last_values_;
-  // The points' equivalent plastic strain at the start of the step, by point id, and which
-  // points flowed plastically in the last step (points.vtu's `plastic`), by index.
-  std::vector<double> step_start_plastic_strain_;
-  std::vector<Index> plastic_;
 };
 
 }  // namespace geompm

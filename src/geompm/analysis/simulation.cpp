@@ -97,16 +97,27 @@ void Simulation::distribute_points() {
   if (!processes_.distributed()) return;
   std::vector<int> cell_part = partition_by_points(model_, processes_.size());
   keep_own_points(model_.points, cell_part, processes_.rank());
+  if (model_.fem) model_.fem->keep_own(cell_part, processes_.rank());
   stepper_.distribute(processes_, std::move(cell_part));
 }
 
 void Simulation::start() {
-  // Every process holds every point until they are shared out, after the initial output. Process
-  // 0 writes it; the others learn whether it could (an output directory that cannot be used).
+  // Every process holds every point until they are shared out, after the initial history row.
+  // Process 0 writes it; the others learn whether it could (an output directory that cannot be
+  // used).
   together(processes_, [&] {
     if (writes_files()) start_output();
   });
   distribute_points();
+  point_output_ = std::make_unique<PointOutput>(model_, options_.output_dir, processes_);
+  if (model_.spec.output.vtk_every > 0) write_points();
+}
+
+void Simulation::write_points() {
+  const PointOutput::Files files = point_output_->write(step_number_);
+  together(processes_, [&] {
+    if (output_) output_->list_points(time_, files.points, files.gauss);
+  });
 }
 
 void Simulation::start_output() {
@@ -142,6 +153,7 @@ void Simulation::resume() {
   });
   // Whatever rank count wrote it: the checkpoint holds every point; the cut is made anew.
   distribute_points();
+  point_output_ = std::make_unique<PointOutput>(model_, options_.output_dir, processes_);
   together(processes_, [&] {
     if (writes_files()) resume_output(checkpoint);
   });
@@ -292,11 +304,13 @@ void Simulation::accept(const StepResult& step, double dt) {
   const bool phase_done = control_->finished();
   const int vtk_every = model_.spec.output.vtk_every;
   const bool vtk = vtk_every > 0 && (step_number_ % vtk_every == 0 || phase_done);
-  // A distributed run gathers the points only for the output that reads them.
+  if (vtk_every > 0) point_output_->after_step();
+  if (vtk) write_points();
+  // A distributed run gathers the points only for the histories, which read them.
   const auto write_step = [&] {
     output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk);
   };
-  if (vtk || !model_.spec.output.histories.empty())
+  if (!model_.spec.output.histories.empty())
     with_all_points(write_step);
   else
     together(processes_, [&] {
@@ -337,8 +351,15 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   const bool due =
       phase_done || (every_steps > 0 && step_number_ % every_steps == 0) || timed_on_rank0;
   if (!due) return;
-  with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
+  write_checkpoint();
   last_checkpoint_ = Clock::now();
+}
+
+// In the serial format, whatever the number of processes: every point and Gauss point on
+// process 0, which writes it.
+void Simulation::write_checkpoint() {
+  if (model_.fem) gather_fem_region(*model_.fem, processes_);
+  with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
 }
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
@@ -364,7 +385,7 @@ void Simulation::stop_on_interrupt() {
   const spec::Checkpoint& schedule = model_.spec.output.checkpoint;
   const bool checkpoints =
       options_.checkpoint_every.value_or(schedule.every_steps) > 0 || schedule.every_minutes > 0;
-  if (checkpoints) with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
+  if (checkpoints) write_checkpoint();
   stop(fmt::format(
       "interrupted ({}) in phase '{}' after step {}; results up to time {:g} are in "
       "{}{}",
@@ -396,15 +417,26 @@ void Simulation::finish(const std::string& stop_reason) {
   summary_.wall_seconds = wall_before_ + seconds_since(started_);
   summary_.lost_mass = model_.lost_mass;
   summary_.lost_points = model_.lost_points;
-  // Where the run stopped, unless its last step was written (collective: every process's points).
+  // Where the run stopped, unless its last step was written.
   if (!stop_reason.empty()) try {
-      with_all_points([&] {
-        if (output_) output_->last_state(time_, step_number_);
-      });
+      write_last_state();
     } catch (const std::exception&) {
     }
   together(processes_, [&] {
     if (writes_files()) finish_output(stop_reason);
+  });
+}
+
+// A run that stops between two ParaView steps still shows where it stopped.
+void Simulation::write_last_state() {
+  if (model_.spec.output.vtk_every <= 0) return;
+  const PointOutput::Files files = point_output_->files(step_number_);
+  // Process 0's series says whether the step's files were written; every process learns it.
+  const bool listed = output_ && output_->lists_points(files.points);
+  if (processes_.sum(listed ? 1.0 : 0.0) > 0) return;
+  write_points();
+  together(processes_, [&] {
+    if (output_) output_->write_structures(time_, step_number_);
   });
 }
 

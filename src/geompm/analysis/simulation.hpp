@@ -11,6 +11,7 @@
 #include <string>
 
 #include "geompm/analysis/phase_context.hpp"
+#include "geompm/analysis/point_output.hpp"
 #include "geompm/analysis/progress_line.hpp"
 #include "geompm/analysis/run.hpp"
 #include "geompm/analysis/run_output.hpp"
@@ -62,11 +63,18 @@ class Simulation {
   void check_motions_followed();
   void accept(const StepResult& step, double dt);
   void checkpoint_if_due(bool phase_done);
+  /// Writes the checkpoint (collective).
+  void write_checkpoint();
   [[noreturn]] void stop_on_interrupt();
   void update_clocks();
   [[noreturn]] void stop(const std::string& message);
   /// Distributed: cuts the mesh by the points every process holds now and keeps this process's.
   void distribute_points();
+  /// The points' ParaView files of the step the run is at, each process its own (collective).
+  void write_points();
+  /// A stopped run: the points' and structures' ParaView files of the last converged step, if
+  /// that step did not write them (collective).
+  void write_last_state();
   /// Runs `write` on process 0 with every process's points in the model (gathered there, then
   /// given back): the output and checkpoints are written as a serial run writes them. Collective.
   template <class Write>
@@ -80,7 +88,8 @@ class Simulation {
   std::unique_ptr<LinearSolver> solver_;
   StepSolver stepper_;
   ProgressLine progress_;
-  std::unique_ptr<OutputWriter> output_;
+  std::unique_ptr<OutputWriter> output_;       // process 0's
+  std::unique_ptr<PointOutput> point_output_;  // every process's, once the points are shared out
 
   // Where the run is: the phase (its context and time-step controller while it runs), the
   // analysis time and the converged steps so far.

@@ -21,6 +21,8 @@ namespace geompm {
 GridSettings grid_settings(const Model& model) {
   GridSettings s;
   s.kinematics = model.kinematics();
+  // Made with the StepSolver, before a distributed run shares the points out (Simulation::start,
+  // resume): every process holds every point here.
   const double soil_modulus = model.softest_modulus();
   s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * soil_modulus;
   s.sparse_node_modulus = model.spec.numerics.sparse_node_stiffness * soil_modulus;

@@ -111,8 +111,7 @@ void contacts(StepSystem& system, StepContext& c) {
   // after the structures' unknowns.
   if (c.model.contacts.empty()) return;
   // The stiffest material the points carry, on every process's points.
-  double modulus = c.model.largest_modulus();
-  c.grid.communicator().max(&modulus, 1);
+  const double modulus = c.model.largest_modulus(c.grid.communicator());
   for (ContactPair& pair : c.model.contacts)
     if (pair.enabled)
       system.add(std::make_unique<LevelSetContact>(c.grid, c.model.points, *c.model.locator,

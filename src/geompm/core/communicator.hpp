@@ -1,10 +1,10 @@
 // The processes of a distributed run as the engine sees them (docs/architecture.md, "Distributed
 // runs"): who this process is, and the few collective operations the step needs - sums over the
 // grid's shared quantities, the exchange of points between processes, the gathering of points
-// for the output. The interface lives in core so that every room may take one without knowing
-// MPI; the MPI implementation is the solver room's (solver/petsc_communicator.hpp), which links
-// MPI through PETSc. A serial run uses serial_communicator(): one process, every operation the
-// identity, no MPI start-up.
+// for the histories and checkpoints. The interface lives in core so that every room may take one
+// without knowing MPI; the MPI implementation is the solver room's (solver/petsc_communicator.hpp),
+// which links MPI through PETSc. A serial run uses serial_communicator(): one process, every
+// operation the identity, no MPI start-up.
 //
 // Every collective call must be made by every process, in the same order. Results of sums are
 // the same bits on every process (reduced on one, then broadcast), so that every process takes

@@ -19,6 +19,19 @@ FemRegion::FemRegion(const Mesh& mesh, const std::vector<CellKind>& kinds)
       fem_cell_[c] = 1;
       for (Index a : mesh.cell_nodes(c)) fem_node_[a] = 1;
     }
+  own_.assign(cells_.size(), 1);
+}
+
+void FemRegion::keep_own(const std::vector<int>& cell_part, int rank) {
+  for (std::size_t k = 0; k < cells_.size(); ++k) own_[k] = cell_part[cells_[k]] == rank;
+}
+
+std::vector<Index> FemRegion::own_gauss_points() const {
+  std::vector<Index> own;
+  for (std::size_t k = 0; k < cells_.size(); ++k)
+    if (own_[k])
+      for (Index g = gauss_start_[k]; g < gauss_start_[k + 1]; ++g) own.push_back(g);
+  return own;
 }
 
 }  // namespace geompm

@@ -39,6 +39,16 @@ class FemRegion {
   /// The mesh's node positions at the start of the analysis.
   const std::vector<Vec3>& initial_nodes() const { return initial_nodes_; }
 
+  /// A distributed run (docs/architecture.md, "Distributed runs"): this process works on the
+  /// region's cells that `cell_part` gives to `rank`, and their Gauss points are its own (those
+  /// of the other cells in this store are not kept up to date). Every cell is, until this is
+  /// called.
+  void keep_own(const std::vector<int>& cell_part, int rank);
+  /// Whether this process works on region cell k (cells()[k]).
+  bool own(std::size_t k) const { return own_[k] != 0; }
+  /// The Gauss points of this process's cells, ascending.
+  std::vector<Index> own_gauss_points() const;
+
   /// Moves the FEM nodes by their converged increment (updated Lagrangian, never reset):
   /// nodal(node) the increment of mesh node `node`.
   template <class Increment>
@@ -52,6 +62,7 @@ class FemRegion {
   std::vector<Index> cells_;
   std::vector<char> fem_cell_, fem_node_;
   std::vector<Index> gauss_start_;  // per region cell, and one past the last
+  std::vector<char> own_;           // per region cell: 1 if this process works on it
   MaterialPoints gauss_;
   std::vector<Vec3> initial_nodes_;
 };

@@ -38,10 +38,12 @@ FemRegionTerm::FemRegionTerm(FemRegion& region, const GridSystem& grid, const Do
   std::vector<Index> of_cell(mesh.num_cells(), -1);
   for (std::size_t k = 0; k < region.cells().size(); ++k)
     of_cell[region.cells()[k]] = static_cast<Index>(k);
+  // In a distributed run, this process's cells only (FemRegion::keep_own).
   for (const std::vector<Index>& colour : grid.colours()) {
     colours_.emplace_back();
     for (Index ci : colour)
-      if (const Index k = of_cell[grid.active_cells()[ci]]; k >= 0) colours_.back().push_back(k);
+      if (const Index k = of_cell[grid.active_cells()[ci]]; k >= 0 && region.own(k))
+        colours_.back().push_back(k);
   }
   // Self-weight f_a = sum_q m_q N_a(xi_q) g (eq. 19.4): the Gauss points' masses are constant.
   applied_ = Vector::Zero(static_cast<Index>(cell_dofs_.size()));
@@ -49,6 +51,7 @@ FemRegionTerm::FemRegionTerm(FemRegion& region, const GridSystem& grid, const Do
       mesh, static_cast<Index>(region.cells().size()), [&](Index k) { return region.cells()[k]; },
       [&](auto element, Index k) {
         using E = decltype(element);
+        if (!region.own(k)) return;
         double* cell = applied_.data() + cell_start_[k];
         for (Index g = region.gauss_begin(k); g < region.gauss_begin(k + 1); ++g) {
           const typename E::Values N = E::shape(gauss.local[g].template head<E::dim>());
@@ -61,6 +64,7 @@ FemRegionTerm::FemRegionTerm(FemRegion& region, const GridSystem& grid, const Do
 void FemRegionTerm::declare_couplings(SparsityBuilder& pattern) const {
   std::vector<Index> block;
   for (std::size_t k = 0; k + 1 < cell_start_.size(); ++k) {
+    if (!region_.own(k)) continue;
     block.assign(cell_dofs_.begin() + cell_start_[k], cell_dofs_.begin() + cell_start_[k + 1]);
     pattern.couple_unknowns(block);
   }
@@ -70,10 +74,11 @@ void FemRegionTerm::attach(const SparseMatrix& pattern) {
   const std::size_t cells = region_.cells().size();
   slots_.resize(slot_start_.back());
   for (std::size_t k = 0; k < cells; ++k)
-    block_slots(pattern, dofs_,
-                std::span<const Index>(cell_dofs_.data() + cell_start_[k],
-                                       cell_start_[k + 1] - cell_start_[k]),
-                slots_.data() + slot_start_[k]);
+    if (region_.own(k))  // the pattern holds this process's cells' blocks only
+      block_slots(pattern, dofs_,
+                  std::span<const Index>(cell_dofs_.data() + cell_start_[k],
+                                         cell_start_[k + 1] - cell_start_[k]),
+                  slots_.data() + slot_start_[k]);
 }
 
 bool FemRegionTerm::add_cells(const Vector& du, SystemForces* forces, SparseMatrix* tangent,

@@ -4,7 +4,8 @@
 // the phase's gravity (f_ext, eq. 19.4), on the grid's displacement unknowns: a node an FEM cell
 // shares with an MPM cell is one unknown of one monolithic system. At the converged step it
 // writes the Gauss points' new states into the region's store; the nodes are moved by the step
-// (analysis/step.cpp), before the points are relocated.
+// (analysis/step.cpp), before the points are relocated. In a distributed run each process adds
+// and commits the cells it owns (FemRegion::keep_own).
 #pragma once
 
 #include <vector>
@@ -21,6 +22,9 @@ class FemRegionTerm final : public Contribution {
   /// `grid` (GridSystem activates FEM cells).
   FemRegionTerm(FemRegion& region, const GridSystem& grid, const DofMap& dofs, const Vec3& gravity);
   const char* name() const override { return "fem region"; }
+  /// Its forces are sums over the Gauss points of the cells this process works on (FemRegion::
+  /// keep_own), as the material points' are over the points it holds.
+  bool sums_own_points() const override { return true; }
   void declare_couplings(SparsityBuilder& pattern) const override;
   /// Finds where each cell's stiffness entries go in the step's pattern, once a step.
   void attach(const SparseMatrix& pattern) override;

@@ -196,10 +196,7 @@ class VtuBuilder {
         data_.put(0.5 * (t(1, 2) + t(2, 1)));
         data_.put(0.5 * (t(0, 2) + t(2, 0)));
       }
-      // Component names make the order explicit in ParaView's array lists.
-      xml += data_array_tag("Float64", name, 6, offset,
-                            " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\" "
-                            "ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"");
+      xml += data_array_tag("Float64", name, 6, offset, vtk_xml::symmetric_tensor_components);
     }
     for (const auto& [name, values] : fields.integers) {
       check_size(name, values, count, what);

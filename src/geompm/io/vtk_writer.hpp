@@ -1,6 +1,7 @@
 // ParaView output: binary VTK XML unstructured grids (.vtu, appended raw data, UInt64 headers)
-// for the material points (as vertices) and for the background mesh, and a .pvd collection per
-// series that lists every file with its time. Every file is written to a temporary name and
+// for the material points (as vertices) and for the background mesh, the .pvtu that makes the
+// points' pieces of a distributed run one data set, and a .pvd collection per series that lists
+// every file with its time. Every file is written to a temporary name and
 // renamed, so a file on disk is always complete, also when a run stops.
 #pragma once
 
@@ -16,6 +17,12 @@ namespace geompm {
 /// Writes points (positions) as VTK_VERTEX cells with point data `fields`.
 void write_vtu_points(const std::filesystem::path& file, const std::vector<Vec3>& positions,
                       const FieldSet& fields);
+
+/// Writes the .pvtu that makes the pieces (`pieces`, .vtu files of write_vtu_points, relative to
+/// the .pvtu's folder) one data set: each piece holds the arrays of `fields` (their values are
+/// not read, any piece's will do).
+void write_pvtu_points(const std::filesystem::path& file, const std::vector<std::string>& pieces,
+                       const FieldSet& fields);
 
 /// Writes the mesh (node positions `nodes`, which may differ from mesh.nodes) with node data and
 /// cell data. Tri6 is written as VTK_QUADRATIC_TRIANGLE.

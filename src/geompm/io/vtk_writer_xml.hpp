@@ -5,6 +5,12 @@
 
 namespace geompm::vtk_xml {
 
+/// The component names of a symmetric tensor's six values, in ParaView's order: they make the
+/// order explicit in ParaView's array lists.
+inline constexpr const char* symmetric_tensor_components =
+    " ComponentName0=\"XX\" ComponentName1=\"YY\" ComponentName2=\"ZZ\" "
+    "ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"";
+
 /// Escapes the XML special characters, so that any field or file name makes a valid attribute.
 inline std::string escape(const std::string& text) {
   std::string out;

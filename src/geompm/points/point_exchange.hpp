@@ -1,7 +1,7 @@
 // Material points between the processes of a distributed run (docs/architecture.md,
 // "Distributed runs"): a point belongs to the process that owns its cell. After the points are
 // convected, those that crossed into another process's cell are sent to it (one all-to-all
-// exchange of whole points, their state included); for the output and checkpoints the points of
+// exchange of whole points, their state included); for the histories and checkpoints the points of
 // every process are gathered on process 0.
 #pragma once
 

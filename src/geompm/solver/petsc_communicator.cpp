@@ -25,7 +25,7 @@ void check(int code, const char* what) {
 // One MPI call carries at most INT_MAX elements, counted and placed by int. The sizes are
 // exchanged as 64-bit numbers first, so that every process sees the same total and all stop
 // together (an error met by all, core/agreement.hpp), with the reason, where a gather would not
-// fit (gathering every point to process 0 for the output can pass 2 GB at millions of points).
+// fit (gathering every point to process 0 for a checkpoint can pass 2 GB at millions of points).
 std::vector<int> message_counts(MPI_Comm comm, int size, std::size_t mine, const char* what) {
   const auto own = static_cast<long long>(mine);
   std::vector<long long> sizes(static_cast<std::size_t>(size));
@@ -35,7 +35,8 @@ std::vector<int> message_counts(MPI_Comm comm, int size, std::size_t mine, const
   if (total > std::numeric_limits<int>::max())
     throw Shared<RunError>(fmt::format(
         "{} of {:.2f} GB would be gathered in one MPI message, which carries at most {:.2f} GB "
-        "(a distributed run gathers its points to process 0 for the output): run it on fewer "
+        "(a distributed run gathers its points to process 0 for the histories and checkpoints): "
+        "run it on fewer "
         "points, or on one process",
         what, total / 1e9, std::numeric_limits<int>::max() / 1e9));
   return {sizes.begin(), sizes.end()};
