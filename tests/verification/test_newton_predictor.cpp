@@ -82,9 +82,9 @@ TEST(NewtonPredictor, AStepWhoseExtrapolatedStartFailsIsSolvedFromZero) {
   // And steps that do not grow back after a cut-back (growth: 1): the step grows with Newton's
   // iteration count (docs/theory.md §4.6), which differs between the two starts, and the curve is
   // compared step by step.
-  const auto [zero, extrapolated] = run_both_starts(
-      "mohr_coulomb_footing/mohr_coulomb_footing.yaml", "vtk: {every: 10}", newton, "strip",
-      "1.0e-6", {"max: 0.025}", "max: 0.025, growth: 1.0}"});
+  const auto [zero, extrapolated] =
+      run_both_starts("mohr_coulomb_footing/mohr_coulomb_footing.yaml", "vtk: {every: 10}", newton,
+                      "strip", "1.0e-6", {"max: 0.025}", "max: 0.025, growth: 1.0}"});
   const double q_zero = zero.column("force").back(),
                q_extrapolated = extrapolated.column("force").back();
   std::printf(

@@ -1,7 +1,7 @@
 // The analysis driver: phases in sequence, each stepping through its duration with adaptive time
-// steps (cut back on failure and retried from the last converged state, grown or shrunk by the Newton iterations they took),
-// writing ParaView files, the history CSV and plots as it goes, so that a run that stops keeps
-// every finished step, and checkpoints from which a killed run resumes.
+// steps (cut back on failure and retried from the last converged state, grown or shrunk by the
+// Newton iterations they took), writing ParaView files, the history CSV and plots as it goes, so
+// that a run that stops keeps every finished step, and checkpoints from which a killed run resumes.
 #pragma once
 
 #include <cstdint>

@@ -20,8 +20,7 @@ double StepController::trial_step() const {
 
 void StepController::converged(double dt, int iterations) {
   state_.time += dt;
-  const double ratio =
-      static_cast<double>(settings_.target_iterations) / std::max(iterations, 1);
+  const double ratio = static_cast<double>(settings_.target_iterations) / std::max(iterations, 1);
   // Eq. 4.6: grow after quick steps, never shorten a converged one (only a failed step is cut).
   const double factor = std::clamp(std::sqrt(ratio), 1.0, settings_.growth);
   state_.dt = std::min(dt * factor, settings_.max);

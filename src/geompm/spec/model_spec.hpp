@@ -257,9 +257,9 @@ struct TimeStepping {
   double initial = 0.0;
   double min = 0.0;
   double max = 0.0;
-  double growth = 1.5;         // largest factor after a converged step
-  double cutback = 0.5;        // factor after a failed step
-  int target_iterations = 8;   // Newton iterations a step should take (fewer: grow; more: shrink)
+  double growth = 1.5;        // largest factor after a converged step
+  double cutback = 0.5;       // factor after a failed step
+  int target_iterations = 8;  // Newton iterations a step should take (fewer: grow; more: shrink)
 };
 
 struct Newton {
