@@ -16,7 +16,7 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
                           const NewtonSettings& settings, Vector& x, SparseMatrix& tangent) {
   NewtonResult result;
   const ConvergenceTest convergence(settings);
-  Backtracking backtracking(settings.max_halvings);
+  Backtracking backtracking(settings.max_halvings, settings.inadmissible_halvings);
   EnergyLineSearch energy_search(settings.energy_search);
   Vector residual, dx;
   double force_scale = 0.0;
@@ -62,9 +62,9 @@ NewtonResult solve_newton(NonlinearProblem& problem, LinearSolver& solver,
       if (kept < 1.0) {
         ++result.searches;
       } else {
-        const bool overshot = Backtracking::overshot(admissible, relative, result.residuals.back(),
-                                                     energy_search.searched());
-        if (backtracking.retreat(overshot, x, dx)) {
+        const auto overshoot = Backtracking::overshoot(
+            admissible, relative, result.residuals.back(), energy_search.searched());
+        if (backtracking.retreat(overshoot, x, dx)) {
           kept = 0.5;
           ++result.halvings;
         }

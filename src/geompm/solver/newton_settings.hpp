@@ -27,9 +27,12 @@ struct NewtonSettings {
   double increment_floor = 0.0;
   double divergence_factor =
       1e8;  // residual growth over the first residual that counts as divergence
-  /// Backtracking: a correction that makes the residual grow, or turns a point inside out, is
-  /// halved, at most this many times in a row (0: plain Newton).
+  /// Backtracking (backtracking.hpp): a correction that makes the residual grow is halved, at
+  /// most this many times in a row (0: plain Newton, newton.line_search).
   int max_halvings = 0;
+  /// ... and one that turns a point inside out, at most this many times (always on: an inverted
+  /// iterate cannot be evaluated, and halving costs nothing where none inverts).
+  int inadmissible_halvings = 6;
   /// Energy line search (docs/theory.md §4.4): if > 0, a correction dx after which the residual's
   /// component along it, s = dx . R, has turned negative beyond this fraction of its value at the
   /// start is shortened to where |s| is within this fraction (0: off).

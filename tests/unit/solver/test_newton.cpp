@@ -92,14 +92,17 @@ TEST(NewtonBacktracking, HalvingTheOvershootFindsTheRoot) {
 }
 
 // Plain Newton from x0 = 2 jumps to x1 = 2 - atan(2) (1 + 4) = -3.54: beyond |x| <= 3 the problem
-// refuses the iterate, and Newton stops there in the problem's words (the engine's: a point
-// turned inside out, or its stress update failed); with |x| <= 4 the same iterate is evaluated.
+// refuses the iterate (the engine's: a point turned inside out, or its stress update failed).
+// Without halvings Newton stops there in the problem's words; with |x| <= 4 the same iterate is
+// evaluated.
 TEST(NewtonInadmissible, StopsWithTheProblemsReason) {
   Arctangent problem(1.0, 3.0);
   auto solver = create_linear_solver("sparse_lu");
   Vector x = Vector::Constant(1, 2.0);
   SparseMatrix tangent;
-  const NewtonResult refused = solve_newton(problem, *solver, settings_to(1e-12, 30), x, tangent);
+  NewtonSettings no_halvings = settings_to(1e-12, 30);
+  no_halvings.inadmissible_halvings = 0;
+  const NewtonResult refused = solve_newton(problem, *solver, no_halvings, x, tangent);
   EXPECT_FALSE(refused.converged);
   EXPECT_TRUE(refused.inadmissible);
   EXPECT_EQ(refused.failure, "beyond the admissible range");
@@ -109,6 +112,20 @@ TEST(NewtonInadmissible, StopsWithTheProblemsReason) {
   const NewtonResult diverged = solve_newton(wider, *solver, settings_to(1e-12, 1), x, tangent);
   EXPECT_FALSE(diverged.inadmissible);
   EXPECT_NEAR(x(0), 2.0 - std::atan(2.0) * 5.0, 1e-12);
+}
+
+// The default settings (newton.line_search 0) halve the inadmissible iterate: x = 2 - 5.54 / 2 =
+// -0.77 is admissible and inside the arctangent's quadratic basin, so plain Newton finds the root
+// where it would otherwise have stopped (and it does not halve the iterates whose residual grew).
+TEST(NewtonInadmissible, TheDefaultHalvesAnInadmissibleIterate) {
+  Arctangent problem(1.0, 3.0);
+  auto solver = create_linear_solver("sparse_lu");
+  Vector x = Vector::Constant(1, 2.0);
+  SparseMatrix tangent;
+  const NewtonResult result = solve_newton(problem, *solver, settings_to(1e-12, 30), x, tangent);
+  expect_root_found(result, x, 0.0, result.halvings);
+  EXPECT_EQ(result.halvings, 1);
+  EXPECT_DOUBLE_EQ(result.step_lengths.front(), 0.5);
 }
 
 NewtonResult solve_checked(double tangent_factor, Vector& x) {
