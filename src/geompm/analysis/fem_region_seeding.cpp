@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "geompm/analysis/material_formulation.hpp"
 #include "geompm/analysis/mesh_regions.hpp"
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/core/error.hpp"
@@ -34,7 +35,7 @@ void check_supported(const spec::Model& spec, const spec::MeshRegion& region) {
                       "dynamics: quasi_static or no FEM region",
                       phase.name));
   for (const spec::Material& material : spec.materials)
-    if (material.formulation.value_or(spec.numerics.formulation) == spec::Formulation::Mixed)
+    if (material_formulation(spec, material).formulation == spec::Formulation::Mixed)
       fail(
           fmt::format("material '{}' takes the mixed p-u formulation, which FEM regions do not "
                       "support; use formulation: f_bar (nearly incompressible soil) or no FEM "
