@@ -28,42 +28,53 @@ bool has_fem_region(const spec::Model& model) {
                      [](const spec::MeshRegion& r) { return r.kind == CellKind::Fem; });
 }
 
-/// What suits a material whose volume its plastic flow or its elasticity constrains, in the
-/// formulation (and pressure) that relieves the constraint; else the displacement formulation.
-/// `mixed` false: the model has FEM regions, which take no pressure field (theory §19).
+bool has_simplex_cells(const Mesh& mesh) {
+  for (const CellType type : mesh.types_present())
+    if (type == CellType::Tri3 || type == CellType::Tri6 || type == CellType::Tet4) return true;
+  return false;
+}
+
+/// What suits a material whose volume its plastic flow or its elasticity constrains: the
+/// formulation that relieves the constraint; else the displacement formulation. `mixed` false:
+/// the model has FEM regions, which take no pressure field (theory §19), or triangles or
+/// tetrahedra: on the rough rigid strip of validation.md §4 on crossed triangles (nu = 0.49,
+/// h = B/20) the mixed formulation stops at 0.042 B carrying 3.55 s_u, 31 % below Prandtl's,
+/// where F-bar reaches 0.1 B at 5.81 s_u (the triangles' first-order over-estimate, §11); a
+/// constant-strain triangle's points share one volume change, so F-bar is the displacement
+/// formulation there (tetrahedra by the same token, not measured).
 MaterialFormulation suited(const spec::Material& material, bool mixed) {
   const std::string origin = "default for " + material.model;
-  const bool elastic = material.model == "linear_elastic" || material.model == "hencky" ||
-                       material.model == "neo_hookean";
+  const Formulation relieved = mixed ? Formulation::Mixed : Formulation::FBar;
   // Tresca's flow is isochoric: bilinear cells in the displacement formulation lock on it (8 x
   // Prandtl's load at nu = 0.4999, validation.md §4); the mixed p-u formulation (theory §11) does
-  // not, and F-bar (§12) neither, one volume per cell.
-  const bool isochoric = material.model == "tresca" ||
-                         (elastic && parameter(material, "nu", 0.0) >= kNearlyIncompressible);
-  if (isochoric) return {mixed ? Formulation::Mixed : Formulation::FBar, false, origin};
-  if (material.model == "mohr_coulomb") {
-    // Associated flow dilates at sin(psi), a constraint bilinear cells in the displacement
-    // formulation cannot meet either (dilatancy locking, Sloan & Randolph 1982): +16 % over
-    // Prandtl-Reissner's N_c on the stiff strip at h = B/20 (validation.md §8). Mixed p-u at the
-    // field's pressure (theory §14) ties the dilatancy to the kinematics in the mean over each
-    // node's support; in an FEM region, F-bar carries isochoric flow (psi = 0), not dilatant flow
-    // (its runs stop early, validation.md §8).
-    if (mixed) return {Formulation::Mixed, true, origin};
-    if (parameter(material, "psi", 0.0) == 0.0) return {Formulation::FBar, false, origin};
-  }
+  // not, and F-bar (§12), one volume per cell, neither.
+  if (material.model == "tresca") return {relieved, false, origin};
+  // Mohr-Coulomb with isochoric flow (psi = 0): F-bar. In the displacement formulation the stiff
+  // c-phi strip (phi = 20 deg) stops at 0.0006 B; with F-bar it levels off at +0.5 % of N_c, and
+  // the slope and layered-ground examples run through, where the mixed formulation at the
+  // field's pressure stops the slope (validation.md §8).
+  if (material.model == "mohr_coulomb" && parameter(material, "psi", 0.0) == 0.0)
+    return {Formulation::FBar, false, origin};
+  // Nearly incompressible elasticity, of any model.
+  if (parameter(material, "nu", 0.0) >= kNearlyIncompressible) return {relieved, false, origin};
+  // Dilatant Mohr-Coulomb flow (psi > 0) locks bilinear cells in the displacement formulation too
+  // (Sloan & Randolph 1982; +16 % over Prandtl-Reissner's N_c on the stiff strip at h = B/20),
+  // but it stays there: F-bar stops early, and the mixed formulation at the field's pressure,
+  // which does not lock, stops 6 of the 8 dilatant examples (validation.md §8).
   return {Formulation::Displacement, false, origin};
 }
 
 }  // namespace
 
-MaterialFormulation material_formulation(const spec::Model& model, const spec::Material& material) {
+MaterialFormulation material_formulation(const spec::Model& model, const Mesh& mesh,
+                                         const spec::Material& material) {
   MaterialFormulation chosen;
   if (material.formulation)
     chosen = {*material.formulation, false, "given"};
   else if (model.numerics.formulation)
     chosen = {*model.numerics.formulation, false, "numerics.formulation"};
   else
-    chosen = suited(material, !has_fem_region(model));
+    chosen = suited(material, !has_fem_region(model) && !has_simplex_cells(mesh));
   // The pressure a mixed material sees: as numerics.mixed_material_pressure says, else the one
   // that suits it (the field's for Mohr-Coulomb, whose yield condition depends on it).
   if (chosen.formulation != Formulation::Mixed)
@@ -84,10 +95,10 @@ std::string describe(const MaterialFormulation& formulation) {
                      formulation.origin);
 }
 
-void check_material_formulations(const spec::Model& model) {
+void check_material_formulations(const spec::Model& model, const Mesh& mesh) {
   if (!model.numerics.mixed_incremental_pressure) return;
   for (const spec::Material& material : model.materials)
-    if (const MaterialFormulation chosen = material_formulation(model, material);
+    if (const MaterialFormulation chosen = material_formulation(model, mesh, material);
         chosen.field_pressure)
       throw InputError(
           model.numerics.incremental_pressure_source,

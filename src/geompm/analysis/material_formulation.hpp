@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "geompm/mesh/mesh.hpp"
 #include "geompm/spec/model_spec.hpp"
 
 namespace geompm {
@@ -17,8 +18,9 @@ struct MaterialFormulation {
   std::string origin;
 };
 
-/// The formulation of `material`, one of `model.materials`.
-MaterialFormulation material_formulation(const spec::Model& model, const spec::Material& material);
+/// The formulation of `material`, one of `model.materials`, on the model's `mesh`.
+MaterialFormulation material_formulation(const spec::Model& model, const Mesh& mesh,
+                                         const spec::Material& material);
 
 /// "mixed p-u at the field's pressure (default for mohr_coulomb)", for geompm check.
 std::string describe(const MaterialFormulation& formulation);
@@ -26,6 +28,6 @@ std::string describe(const MaterialFormulation& formulation);
 /// Throws InputError where the settings the formulations take contradict each other: a material
 /// at the field's pressure (theory §14, which carries its own volume mismatch over the steps)
 /// with numerics.mixed_pressure_equation: incremental (eq. 11.8, for the material's own pressure).
-void check_material_formulations(const spec::Model& model);
+void check_material_formulations(const spec::Model& model, const Mesh& mesh);
 
 }  // namespace geompm

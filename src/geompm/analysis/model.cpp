@@ -501,7 +501,7 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   const Mesh& mesh = model->mesh;
   model->topology = build_mesh_topology(mesh);
   check_numerics_fit_mesh(spec, mesh);
-  check_material_formulations(spec);
+  check_material_formulations(spec, mesh);
   model->locator = std::make_unique<PointLocator>(mesh);
   create_materials(spec, *model);
   // The structures before the FEM region: its cells may be given by their distance from one.
@@ -566,7 +566,7 @@ std::string describe_model(const Model& model) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
     out += fmt::format("material   {}: {}{}, {}\n", spec.materials[m].name, spec.materials[m].model,
-                       params, describe(material_formulation(spec, spec.materials[m])));
+                       params, describe(material_formulation(spec, model.mesh, spec.materials[m])));
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;

@@ -47,7 +47,7 @@ GridSettings grid_settings(const Model& model) {
   }
   if (model.fem) s.fem_cells = model.fem->fem_cell();
   for (const auto& material : model.spec.materials) {
-    const MaterialFormulation chosen = material_formulation(model.spec, material);
+    const MaterialFormulation chosen = material_formulation(model.spec, model.mesh, material);
     const bool mixed = chosen.formulation == spec::Formulation::Mixed;
     s.mixed.push_back(mixed);
     s.field_pressure.push_back(chosen.field_pressure);
