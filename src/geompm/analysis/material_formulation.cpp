@@ -12,7 +12,7 @@ namespace {
 using spec::Formulation;
 
 /// The Poisson's ratio from which an elastic material takes the mixed formulation. On the elastic
-/// thick cylinder (Lamé; examples/thick_cylinder/ made linear elastic, 6 cells across the wall,
+/// thick cylinder (Lamé; examples/thick_cylinder/ made linear elastic, 5 cells across the wall,
 /// docs/validation.md §22) the displacement formulation's excess over the mixed one grows as
 /// 1/(1 - 2 nu): 0.3 % at nu = 0.3, 0.7 % at 0.4, 1.4 % at 0.45, 3 % at 0.475, 7.5 % at 0.49, 77 %
 /// at 0.499; from 0.45 on it is more than 1 %.
