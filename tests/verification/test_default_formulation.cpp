@@ -22,11 +22,13 @@
 
 #include "example_text.hpp"
 #include "footing_run.hpp"
+#include "prandtl_reissner.hpp"
 #include "run_model.hpp"
 
 namespace geompm {
 namespace {
 
+using testing::prandtl_reissner_nc;
 using testing::replace_once;
 
 constexpr double kPrandtl = 2.0 + std::numbers::pi;  // Prandtl (1921)
@@ -82,15 +84,6 @@ TEST(DefaultFormulation, NearlyIncompressibleElasticTubeFollowsLame) {
                 exact, 100 * (p / exact - 1));
     EXPECT_NEAR(p / exact, 1.0, 0.01) << "nu = " << nu;
   }
-}
-
-// Prandtl (1921), Reissner (1924): N_c = (N_q - 1) cot(phi), N_q = e^(pi tan phi) tan^2(45 +
-// phi/2), exact for associated flow.
-double prandtl_reissner_nc(double phi_degrees) {
-  const double phi = phi_degrees * std::numbers::pi / 180.0;
-  const double Nq = std::exp(std::numbers::pi * std::tan(phi)) *
-                    std::pow(std::tan(std::numbers::pi / 4 + phi / 2), 2);
-  return (Nq - 1.0) / std::tan(phi);
 }
 
 TEST(DefaultFormulation, IsochoricMohrCoulombStripLevelsOffAtPrandtlReissnersNc) {
