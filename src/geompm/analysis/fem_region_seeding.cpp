@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "geompm/analysis/material_formulation.hpp"
 #include "geompm/analysis/mesh_regions.hpp"
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/core/error.hpp"
@@ -23,7 +24,7 @@ const spec::MeshRegion& fem_region_of(const spec::Model& spec, const Mesh& mesh,
 // What the FEM cells' Gauss points cannot take yet: inertia (their mass is not in the grid's),
 // a pressure field (its unknowns live at the points' nodes) and GIMP (a moving mesh is not a
 // rectilinear grid).
-void check_supported(const spec::Model& spec, const spec::MeshRegion& region) {
+void check_supported(const spec::Model& spec, const Mesh& mesh, const spec::MeshRegion& region) {
   const auto fail = [&](const std::string& what) {
     throw InputError(region.source, fmt::format("FEM region '{}': {}", region.name, what));
   };
@@ -34,7 +35,7 @@ void check_supported(const spec::Model& spec, const spec::MeshRegion& region) {
                       "dynamics: quasi_static or no FEM region",
                       phase.name));
   for (const spec::Material& material : spec.materials)
-    if (material.formulation.value_or(spec.numerics.formulation) == spec::Formulation::Mixed)
+    if (material_formulation(spec, mesh, material).formulation == spec::Formulation::Mixed)
       fail(
           fmt::format("material '{}' takes the mixed p-u formulation, which FEM regions do not "
                       "support; use formulation: f_bar (nearly incompressible soil) or no FEM "
@@ -94,7 +95,7 @@ void build_fem_region(const spec::Model& spec, Model& model) {
   if (std::none_of(kinds.begin(), kinds.end(), [](CellKind k) { return k == CellKind::Fem; }))
     return;
   for (const spec::MeshRegion& region : spec.regions)
-    if (region.kind == CellKind::Fem) check_supported(spec, region);
+    if (region.kind == CellKind::Fem) check_supported(spec, mesh, region);
   model.fem = std::make_unique<FemRegion>(mesh, kinds);
   check_structures_clear(spec, model);
   std::vector<RegionTest> bodies;

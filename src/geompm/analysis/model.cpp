@@ -9,6 +9,7 @@
 #include "geompm/analysis/fem_region_seeding.hpp"
 #include "geompm/analysis/geostatic_stress.hpp"
 #include "geompm/analysis/initial_stress.hpp"
+#include "geompm/analysis/material_formulation.hpp"
 #include "geompm/analysis/model_size.hpp"
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/boundary/fixities.hpp"
@@ -500,6 +501,7 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
   const Mesh& mesh = model->mesh;
   model->topology = build_mesh_topology(mesh);
   check_numerics_fit_mesh(spec, mesh);
+  check_material_formulations(spec, mesh);
   model->locator = std::make_unique<PointLocator>(mesh);
   create_materials(spec, *model);
   // The structures before the FEM region: its cells may be given by their distance from one.
@@ -563,12 +565,8 @@ std::string describe_model(const Model& model) {
   for (std::size_t m = 0; m < spec.materials.size(); ++m) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
-    const auto formulation = spec.materials[m].formulation.value_or(spec.numerics.formulation);
-    const char* note = formulation == spec::Formulation::Mixed  ? " (mixed p-u)"
-                       : formulation == spec::Formulation::FBar ? " (F-bar)"
-                                                                : "";
-    out += fmt::format("material   {}: {}{}{}\n", spec.materials[m].name, spec.materials[m].model,
-                       params, note);
+    out += fmt::format("material   {}: {}{}, {}\n", spec.materials[m].name, spec.materials[m].model,
+                       params, describe(material_formulation(spec, model.mesh, spec.materials[m])));
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     Index count = 0;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "geompm/analysis/linear_solver_hints.hpp"
+#include "geompm/analysis/material_formulation.hpp"
 #include "geompm/analysis/step_contributions.hpp"
 #include "geompm/core/byte_archive.hpp"
 #include "geompm/mesh/partition.hpp"
@@ -30,7 +31,6 @@ GridSettings grid_settings(const Model& model) {
   s.ghost_penalty = model.spec.numerics.ghost_penalty;
   s.ghost_penalty_fill = model.spec.numerics.ghost_penalty_fill;
   s.buffer_layers = model.spec.numerics.buffer_layers;
-  s.mixed_field_pressure = model.spec.numerics.mixed_field_pressure;
   s.mixed_incremental_pressure = model.spec.numerics.mixed_incremental_pressure;
   s.pressure_stabilisation_floor = model.spec.numerics.pressure_stabilisation_floor;
   s.fitted_pressure_start = model.spec.numerics.fitted_pressure_start;
@@ -47,10 +47,11 @@ GridSettings grid_settings(const Model& model) {
   }
   if (model.fem) s.fem_cells = model.fem->fem_cell();
   for (const auto& material : model.spec.materials) {
-    const auto formulation = material.formulation.value_or(model.spec.numerics.formulation);
-    const bool mixed = formulation == spec::Formulation::Mixed;
+    const MaterialFormulation chosen = material_formulation(model.spec, model.mesh, material);
+    const bool mixed = chosen.formulation == spec::Formulation::Mixed;
     s.mixed.push_back(mixed);
-    s.volume_average.push_back(formulation == spec::Formulation::FBar ||
+    s.field_pressure.push_back(chosen.field_pressure);
+    s.volume_average.push_back(chosen.formulation == spec::Formulation::FBar ||
                                (mixed && model.spec.numerics.mixed_volume_average));
   }
   return s;

@@ -260,8 +260,9 @@ spec::Numerics read_numerics(const yaml::Node& node) {
   if (auto equation = section.find("mixed_pressure_equation")) {
     numerics.mixed_incremental_pressure =
         equation->choice({"total", "incremental"}) == "incremental";
+    numerics.incremental_pressure_source = equation->where();
     // The field's pressure (theory §14) carries its own mismatch over the steps (eq. 14.2).
-    if (numerics.mixed_incremental_pressure && numerics.mixed_field_pressure)
+    if (numerics.mixed_incremental_pressure && numerics.mixed_field_pressure.value_or(false))
       equation->fail(
           "expected 'total' with mixed_material_pressure: field (the field's pressure carries its "
           "volume mismatch over the steps, docs/theory.md §14); 'incremental' applies to "

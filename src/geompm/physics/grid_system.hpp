@@ -48,9 +48,9 @@ struct GridSettings {
   /// displacement points so that plastic flow keeps (or dilates) one volume per cell rather than
   /// one per point; 0: each point its own.
   std::vector<char> volume_average;
-  /// Mixed points evaluate their material at the volume whose pressure is the field's
-  /// (docs/theory.md §14) rather than at their kinematic volume.
-  bool mixed_field_pressure = false;
+  /// Per material index: 1 if its mixed points evaluate their material at the volume whose
+  /// pressure is the field's (docs/theory.md §14) rather than at their kinematic volume.
+  std::vector<char> field_pressure;
   /// Mixed points tie the step's change of their material pressure to the field's (eq. 11.8), and
   /// the stabilisation acts on the step's pressure change (eq. 11.9), rather than the totals.
   bool mixed_incremental_pressure = false;
@@ -112,6 +112,10 @@ class GridSystem {
   bool mixed() const { return mixed_; }
   bool is_mixed(const MaterialPoints& points, Index p) const {
     return mixed_ && settings_.mixed[points.material[p]];
+  }
+  bool is_field_pressure(const MaterialPoints& points, Index p) const {
+    return is_mixed(points, p) && !settings_.field_pressure.empty() &&
+           settings_.field_pressure[points.material[p]];
   }
   /// True if some material takes its cell's volume average (theory §12).
   bool averaging() const { return averaging_; }

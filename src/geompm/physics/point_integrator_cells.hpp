@@ -27,9 +27,11 @@ void PointIntegrator::pressure_stabilisation(Index ci,
   //   S = sum_p (v_p / G_p) (N_p - m)(N_p - m)^T,   m = sum_p v_p N_p / sum_p v_p,
   // over the cell's mixed points with their start-of-step volumes (so S does not depend on the
   // unknowns). It removes the checkerboard modes equal-order u-p cells allow and vanishes for a
-  // pressure constant over the cell. At the field's pressure it is made stronger (eq. 14.4).
-  const double strength =
-      grid_.settings().mixed_field_pressure ? field_pressure_stabilisation : 1.0;
+  // pressure constant over the cell. At the field's pressure it is made stronger (eq. 14.4), point
+  // by point: a cell may hold materials at their own pressure and at the field's.
+  const auto strength = [&](Index p) {
+    return grid_.is_field_pressure(points_, p) ? field_pressure_stabilisation : 1.0;
+  };
   constexpr int nen = E::nodes;
   using Values = Eigen::Matrix<double, nen, 1>;
   S.setZero();
@@ -48,13 +50,13 @@ void PointIntegrator::pressure_stabilisation(Index ci,
       const double shear =
           grid_.materials()[points_.material[p]]->elastic_moduli(points_.internal[p]).shear;
       const Values d = Eigen::Map<const Values>(grid_.cell_shape(p)) - mean;
-      S.noalias() += (strength * points_.volume[p] / shear) * (d * d.transpose());
-      compliance += points_.volume[p] / shear;
+      S.noalias() += (strength(p) * points_.volume[p] / shear) * (d * d.transpose());
+      compliance += strength(p) * points_.volume[p] / shear;
     }
   // Eq. 11.10: a share of the exactly integrated projection, with the points' v / G, so that
   // only the cell's constant pressures escape it however its points cluster.
   if (const double floor = grid_.settings().pressure_stabilisation_floor; floor > 0.0)
-    S.noalias() += (strength * floor * compliance) * exact_pressure_projection<E>();
+    S.noalias() += (floor * compliance) * exact_pressure_projection<E>();
 }
 
 template <class E>
@@ -227,7 +229,7 @@ bool PointIntegrator::integrate_cell_points(Index ci, Index point_end,
     if constexpr (Mixed) {
       if (grid_.is_mixed(points_, p)) {
         ok = integrate_mixed_point(s, start, du_local, p_local, axisymmetric, with_tangent, rm,
-                                   cell_average, grid_.settings().mixed_field_pressure,
+                                   cell_average, grid_.is_field_pressure(points_, p),
                                    grid_.settings().mixed_incremental_pressure);
         if (ok) {
           f_cell.template head<n>() += rm.u.internal_force;

@@ -174,8 +174,7 @@ bool PointIntegrator::integrate_wide_point(Index p, const Vector& du, bool avera
       w.p_local(a) = pressure_->start()(w.nodes[a]) +
                      pressure_->scale() * du(dofs_.dof(pressure_field_, w.nodes[a]));
     if (!integrate_mixed_point(w.s, start, w.du_local, w.p_local, axisymmetric, with_tangent, w.rm,
-                               averaged ? &w.average : nullptr,
-                               grid_.settings().mixed_field_pressure,
+                               averaged ? &w.average : nullptr, grid_.is_field_pressure(points_, p),
                                grid_.settings().mixed_incremental_pressure)) {
       note_inadmissible(p, w.rm.u.state.stress_update_failed);
       return false;

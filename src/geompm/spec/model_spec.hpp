@@ -34,7 +34,9 @@ struct Material {
   std::string name;
   std::string model;                         // registered name, e.g. "linear_elastic"
   std::map<std::string, double> parameters;  // E, nu, density, ...
-  std::optional<Formulation> formulation;    // numerics.formulation when not given
+  /// As given; none: numerics.formulation, or the one that suits the model
+  /// (analysis/material_formulation.hpp).
+  std::optional<Formulation> formulation;
   SourceLocation source;
 };
 
@@ -378,7 +380,9 @@ inline constexpr int max_buffer_layers = 100;
 
 struct Numerics {
   Interpolation interpolation = Interpolation::Standard;
-  Formulation formulation = Formulation::Displacement;  // default of the materials
+  /// The formulation of the materials that give none; none: each material the one that suits it
+  /// (analysis/material_formulation.hpp).
+  std::optional<Formulation> formulation;
   SourceLocation interpolation_source;  // where it was given, for errors found with the mesh
   double empty_cell_stiffness = 1e-4;   // relative to the softest carried Young's modulus
   double sparse_node_stiffness = 0.0;   // relative to the same modulus (eq. 6.2)
@@ -390,11 +394,14 @@ struct Numerics {
   std::string linear_solver = "umfpack";
   std::string petsc_options;  // for experts: PETSc's own options (linear_solver.hpp)
   Index direct_limit = -1;    // auto: the direct solver below this many unknowns (-1: by dimension)
-  bool mixed_volume_average = false;          // mixed_volume: cell_average (F-bar) or per_point
-  bool mixed_field_pressure = false;          // mixed_material_pressure: field (theory §14) or own
-  bool mixed_incremental_pressure = false;    // mixed_pressure_equation: incremental or total
-  double pressure_stabilisation_floor = 0.0;  // share of the exact projection (theory eq. 11.10)
-  bool fitted_pressure_start = false;         // mixed_pressure_start: fitted (eq. 11.11) or points
+  bool mixed_volume_average = false;  // mixed_volume: cell_average (F-bar) or per_point
+  /// mixed_material_pressure: field (theory §14) or own; none: each mixed material the one that
+  /// suits it (analysis/material_formulation.hpp).
+  std::optional<bool> mixed_field_pressure;
+  bool mixed_incremental_pressure = false;     // mixed_pressure_equation: incremental or total
+  SourceLocation incremental_pressure_source;  // where it was given
+  double pressure_stabilisation_floor = 0.0;   // share of the exact projection (theory eq. 11.10)
+  bool fitted_pressure_start = false;          // mixed_pressure_start: fitted (eq. 11.11) or points
 };
 
 struct Model {

@@ -60,7 +60,7 @@ void check_assembled_tangent(const std::string& example, GridInterpolation inter
   if (choice) {
     settings.mixed.assign(spec.materials.size(), choice->mixed);
     settings.volume_average.assign(spec.materials.size(), choice->volume_average);
-    settings.mixed_field_pressure = choice->field_pressure;
+    settings.field_pressure.assign(spec.materials.size(), choice->field_pressure);
     settings.mixed_incremental_pressure = choice->incremental_pressure;
   }
   testing::GridHarness grid(model->mesh, model->topology, model->material_pointers(), settings);

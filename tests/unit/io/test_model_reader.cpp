@@ -193,7 +193,7 @@ TEST(ModelReader, ReadsEveryKeyOfACompleteModel) {
   EXPECT_EQ(m.numerics.buffer_layers, 2);
   EXPECT_EQ(m.numerics.lost_points, spec::LostPointPolicy::Remove);
   EXPECT_EQ(m.numerics.linear_solver, "sparse_lu");
-  EXPECT_EQ(m.numerics.formulation, spec::Formulation::Displacement);  // the default
+  EXPECT_FALSE(m.numerics.formulation.has_value());  // each material the one that suits it
   EXPECT_FALSE(m.materials[0].formulation.has_value());
 }
 

@@ -67,7 +67,7 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
                    "extrapolated_patience: 20}\n");
   const spec::Model model = read_model_from_string(text, "model.yaml");
   EXPECT_TRUE(model.numerics.mixed_volume_average);
-  EXPECT_TRUE(model.numerics.mixed_field_pressure);
+  EXPECT_EQ(model.numerics.mixed_field_pressure, true);
   EXPECT_FALSE(model.numerics.mixed_incremental_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
   EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
@@ -78,8 +78,8 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_EQ(model.phases.at(1).newton.extrapolated_patience, 20);
   EXPECT_EQ(model.phases.at(0).newton.extrapolated_patience, 0);  // half of max_iterations
   const spec::Model defaults = read_model_from_string(kLoadingModel, "model.yaml");
-  EXPECT_FALSE(defaults.numerics.mixed_volume_average);  // per_point
-  EXPECT_FALSE(defaults.numerics.mixed_field_pressure);
+  EXPECT_FALSE(defaults.numerics.mixed_volume_average);              // per_point
+  EXPECT_FALSE(defaults.numerics.mixed_field_pressure.has_value());  // by material
   const spec::Model incremental = read_model_from_string(
       kLoadingModel + "numerics: {mixed_pressure_equation: incremental}\n", "model.yaml");
   EXPECT_TRUE(incremental.numerics.mixed_incremental_pressure);
