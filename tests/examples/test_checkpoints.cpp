@@ -322,8 +322,9 @@ TEST_F(Checkpoints, AStructureResumesWithItsPoseAndMotion) {
                        "    structures:\n"
                        "      plate: {force: [\"0.01*sin(t)\", -0.02], moment: 0.005}\n");
   // Newton's extrapolated start: the plate's unknowns' last rate is state too.
-  model = replace_once(model, "displacement_tolerance: 1.0e-10}",
-                       "displacement_tolerance: 1.0e-10, predictor: extrapolated}");
+  model = replace_once(model, "    dynamics: {newmark: {beta: 0.25, gamma: 0.5}}\n",
+                       "    dynamics: {newmark: {beta: 0.25, gamma: 0.5}}\n"
+                       "    newton: {predictor: extrapolated}\n");
   model = replace_once(model, "    - {quantity: kinetic_energy}\n",
                        "    - {quantity: kinetic_energy}\n"
                        "    - {quantity: displacement, structure: plate, component: x}\n"

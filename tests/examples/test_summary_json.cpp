@@ -55,12 +55,14 @@ void expect_last_history_row(const Json& summary, const Csv& history) {
 
 class SummaryJson : public GeompmRunTest<> {};
 
-// The soft column of test_run_policies.cpp asked to take its load in one step: cut back, then
+// The soft column of test_run_policies.cpp asked to take its load in one step (at most 5 Newton
+// iterations a step): cut back, then
 // grown again; summary.json counts what newton.csv and history.csv show.
 TEST_F(SummaryJson, CountsWhatAFinishedRunDid) {
   std::string model = example_text("column/column_large_deformation.yaml");
   model = replace_once(model, "time_step: {initial: 0.05, min: 0.001, max: 0.05}",
-                       "time_step: {initial: 1.0, min: 0.001, max: 1.0}");
+                       "time_step: {initial: 1.0, min: 0.001, max: 1.0}\n"
+                       "    newton: {max_iterations: 5}");
   write("column.yaml", model);
   const auto r = geompm({"run", "-q", "-t", "1", "-o", "out", "column.yaml"});
   ASSERT_TRUE(r.exited && r.exit_code == 0) << describe(r);

@@ -204,7 +204,8 @@ class RankCounts(unittest.TestCase):
 
     def test_a_feature_not_distributed_is_refused(self):
         model = self.variant("column/column.yaml", lambda text: text.replace(
-            "newton: {max_iterations: 10,", "newton: {tangent_check: 1.0e-6, max_iterations: 10,"))
+            "    dynamics: quasi_static\n",
+            "    dynamics: quasi_static\n    newton: {tangent_check: 1.0e-6}\n"))
         done = run(model, os.path.join(self.dir, "refused"), 2)
         self.assertEqual(done.returncode, 2, done.stderr)
         self.assertIn("the tangent check (newton.tangent_check)", done.stderr)
