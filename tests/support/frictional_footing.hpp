@@ -134,10 +134,11 @@ inline std::string nq_rigid_plastic_model(int n) {
       replace_once(replace_once(example_text("frictional_footing/frictional_footing_nq.yaml"),
                                 "vtk: {every: 10}", "vtk: {every: 0}"),
                    "E: 5000,", "E: 100000,");
-  text = replace_once(with_numerics(text, "interpolation", "standard"),
-                      "    prescribed_motion:\n      - {point_set: footing, displacement: [~, \"-0.01*t\"]}",
-                      "    newton: {line_search: 6, max_iterations: 20}\n"
-                      "    prescribed_motion:\n      - {point_set: footing, displacement: [~, \"-0.01*t\"]}");
+  text = replace_once(
+      with_numerics(text, "interpolation", "standard"),
+      "    prescribed_motion:\n      - {point_set: footing, displacement: [~, \"-0.01*t\"]}",
+      "    newton: {line_search: 6, max_iterations: 20}\n"
+      "    prescribed_motion:\n      - {point_set: footing, displacement: [~, \"-0.01*t\"]}");
   return strip_mesh(replace_once(text, "\"-0.01*t\"", "\"-0.0015*t\""), n);
 }
 

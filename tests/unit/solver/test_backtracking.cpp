@@ -16,9 +16,8 @@ TEST(Backtracking, AnOvershootIsAGrownResidualOrAnInadmissibleIterate) {
   EXPECT_EQ(Backtracking::overshoot(true, 2.0, 1.0, false), Overshoot::Grown);
   EXPECT_EQ(Backtracking::overshoot(true, 0.5, 1.0, false), Overshoot::None);
   EXPECT_EQ(Backtracking::overshoot(false, 0.0, 1.0, false), Overshoot::Inadmissible);
-  EXPECT_EQ(
-      Backtracking::overshoot(true, std::numeric_limits<double>::infinity(), 1.0, false),
-      Overshoot::Inadmissible);
+  EXPECT_EQ(Backtracking::overshoot(true, std::numeric_limits<double>::infinity(), 1.0, false),
+            Overshoot::Inadmissible);
   // A length the energy line search found stands, unless its iterate is inadmissible.
   EXPECT_EQ(Backtracking::overshoot(true, 2.0, 1.0, true), Overshoot::None);
   EXPECT_EQ(Backtracking::overshoot(false, 0.0, 1.0, true), Overshoot::Inadmissible);
