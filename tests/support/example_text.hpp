@@ -56,4 +56,20 @@ inline std::string with_numerics(std::string text, const std::string& key,
   return text.insert(open + 1, close == open + 1 ? entry : entry + ", ");
 }
 
+/// `text` (a model whose phases are a block list, "  - name: ...") with `settings` as the Newton
+/// settings of its phase `phase` ("newton: {settings}"; the first phase if empty), which must not
+/// have any yet.
+inline std::string with_newton(std::string text, const std::string& settings,
+                               const std::string& phase = "") {
+  const std::string lead = "  - name: " + phase;
+  std::size_t at = text.find(lead + (phase.empty() ? "" : "\n"));
+  EXPECT_NE(at, std::string::npos) << "no phase " << phase;
+  if (at == std::string::npos) return text;
+  const std::size_t end = text.find('\n', at);
+  const std::size_t next = text.find("  - name: ", end);
+  EXPECT_EQ(text.substr(end, next - end).find("    newton:"), std::string::npos)
+      << "the phase has Newton settings already";
+  return text.insert(end + 1, "    newton: {" + settings + "}\n");
+}
+
 }  // namespace geompm::testing

@@ -20,7 +20,7 @@ namespace {
 
 // The phase's Newton settings `newton` (a flow mapping, "newton: {...}") written into the example,
 // which gives none: after its `dynamics: quasi_static` line.
-std::string with_newton(const std::string& text, const std::string& newton) {
+std::string with_newton_line(const std::string& text, const std::string& newton) {
   return testing::replace_once(text, "    dynamics: quasi_static\n",
                                "    dynamics: quasi_static\n    " + newton + "\n");
 }
@@ -41,10 +41,10 @@ BothStarts run_both_starts(const std::string& example, const std::string& vtk,
   if (!edit.first.empty()) text = testing::replace_once(text, edit.first, edit.second);
   if (!empty_cells.empty())
     text = testing::with_numerics(text, "empty_cell_stiffness", empty_cells);
-  return {testing::run_spec(read_model_from_string(with_newton(text, newton), name + ".yaml"),
+  return {testing::run_spec(read_model_from_string(with_newton_line(text, newton), name + ".yaml"),
                             name + "_zero"),
           testing::run_spec(
-              read_model_from_string(with_newton(text, with_predictor(newton)), name + ".yaml"),
+              read_model_from_string(with_newton_line(text, with_predictor(newton)), name + ".yaml"),
               name + "_extrapolated")};
 }
 
