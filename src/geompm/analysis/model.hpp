@@ -36,8 +36,8 @@ struct Model {
   std::unique_ptr<FemRegion> fem;
   std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
   /// Per mesh cell, the process that owns it in a distributed run, cut by the points seeding puts
-  /// in each cell (mesh/partition.hpp): `points` holds only the points of this process's cells.
-  /// Empty when the model is built for one process.
+  /// in each cell (a resumed run: the checkpoint's): `points` holds only this process's cells'.
+  /// Empty when the model is built for one process (mesh/partition.hpp).
   std::vector<int> cell_part;
   /// The structures (docs/theory.md §17), in the order of spec.structures; they move with the
   /// steps that converge (their state is saved by Structure::save).

@@ -99,6 +99,7 @@ void Simulation::with_all_points(Write&& write) const {
 
 void Simulation::distribute_points(std::vector<int> cell_part) {
   if (!processes_.distributed()) return;
+  model_.cell_part = cell_part;  // a resumed run's cut is made anew
   keep_own_points(model_.points, cell_part, processes_.rank());
   if (model_.fem) model_.fem->keep_own(cell_part, processes_.rank());
   stepper_.distribute(processes_, std::move(cell_part));
