@@ -64,33 +64,46 @@ int run_command(const RunCommand& command) {
   geompm::install_interrupt_handler();  // Ctrl-C: the run stops cleanly between steps (exit 3)
   // Read and build everything before anything is written, so bad input leaves no output.
   std::optional<geompm::spec::Model> spec;
-  std::unique_ptr<geompm::Model> model;
   std::exception_ptr unread;
   try {
     spec = geompm::read_model(command.model_file);
     override_linear_solver(command, spec->numerics);
-    model = geompm::build_model(*spec);
   } catch (...) {
     unread = std::current_exception();
   }
   // Under mpirun/srun with several processes: a distributed run (docs/user-guide.md, "Running on
   // several processes"); MPI is started only then, with the model's PETSc options. Every process
-  // has read the model: if one could not, they stop together (core/agreement.hpp), process 0
-  // saying why before any process ends (mpirun would stop it with the first to end).
+  // has read the model, then built it, each seeding only its own cells' points: if one could not,
+  // they stop together (core/agreement.hpp), process 0 saying why before any process ends (mpirun
+  // would stop it with the first to end).
   std::unique_ptr<geompm::Communicator> processes;
-  if (geompm::launched_with_several_processes()) {
+  if (geompm::launched_with_several_processes())
     processes = geompm::mpi_world_communicator(spec ? spec->numerics.petsc_options : "");
-    geompm::together(*processes, [&] {
-      if (unread) std::rethrow_exception(unread);
-    });
-  } else if (unread) {
-    std::rethrow_exception(unread);
+  const auto stop_if_unread = [&] {
+    if (processes)
+      geompm::together(*processes, [&] {
+        if (unread) std::rethrow_exception(unread);
+      });
+    else if (unread)
+      std::rethrow_exception(unread);
+  };
+  stop_if_unread();
+  std::unique_ptr<geompm::Model> model;
+  try {
+    model = geompm::build_model(*spec, processes ? *processes : geompm::serial_communicator());
+  } catch (...) {
+    unread = std::current_exception();
   }
+  stop_if_unread();
   const bool first = !processes || processes->rank() == 0;
   std::string output = command.output;
   if (output.empty())
     output = std::filesystem::path(command.model_file).stem().string() + "_results";
-  if (!command.quiet && first) std::cerr << geompm::describe_model(*model);
+  if (!command.quiet) {
+    const std::string description =
+        geompm::describe_model(*model, processes ? *processes : geompm::serial_communicator());
+    if (first) std::cerr << description;
+  }
   if (!command.quiet && first && processes)
     std::cerr << fmt::format("distributed run on {} processes\n", processes->size());
   geompm::RunOptions options;

@@ -28,13 +28,19 @@ void check_distributable(const Model& model, int processes) {
       spec.file, processes, list));
 }
 
-std::vector<int> partition_by_points(const Model& model, int processes) {
-  std::vector<double> points_in_cell(model.mesh.num_cells(), 0.0);
-  for (Index c : model.points.cell) points_in_cell[c] += 1.0;
+std::vector<int> partition_by_work(const Model& model, std::vector<double> points_in_cell,
+                                   int processes) {
+  points_in_cell.resize(model.mesh.num_cells(), 0.0);
   // An FEM cell's work is its Gauss points'.
   if (model.fem)
     for (Index c : model.fem->gauss_points().cell) points_in_cell[c] += 1.0;
   return partition_cells(model.mesh, points_in_cell, processes);
+}
+
+std::vector<int> partition_by_points(const Model& model, int processes) {
+  std::vector<double> points_in_cell(model.mesh.num_cells(), 0.0);
+  for (Index c : model.points.cell) points_in_cell[c] += 1.0;
+  return partition_by_work(model, std::move(points_in_cell), processes);
 }
 
 void gather_fem_region(FemRegion& region, const Communicator& processes) {

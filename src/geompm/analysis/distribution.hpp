@@ -1,8 +1,9 @@
 // What a distributed run (mpirun -np N geompm run) distributes, and what it refuses
 // (docs/architecture.md, "Distributed runs"; docs/user-guide.md, "Running on several processes").
 // The mesh and the grid are replicated on every process; the cells are cut into one part per
-// process (mesh/partition.hpp) by the points they hold when the run starts or resumes, and each
-// process keeps the points of its cells and works on the FEM region's cells it owns.
+// process (mesh/partition.hpp) by the points they hold when the run starts (counted before they are
+// seeded: analysis/body_seeding.hpp) or resumes, and each process holds the points of its cells
+// and works on the FEM region's cells it owns.
 #pragma once
 
 #include <vector>
@@ -16,8 +17,14 @@ namespace geompm {
 /// run does not handle yet (the tangent check), so that none is ever run wrongly.
 void check_distributable(const Model& model, int processes);
 
-/// Per mesh cell, the process that owns it: the cells cut by the points they hold, an FEM cell by
-/// its Gauss points (every process must hold every point, as built or read from a checkpoint).
+/// Per mesh cell, the process that owns it: the cells cut by the work in them, the material points
+/// `points_in_cell` counts (of every process) and an FEM cell's Gauss points. The same on every
+/// process given the same counts.
+std::vector<int> partition_by_work(const Model& model, std::vector<double> points_in_cell,
+                                   int processes);
+
+/// partition_by_work for the points the model holds (every process must hold every point, as
+/// read from a checkpoint).
 std::vector<int> partition_by_points(const Model& model, int processes);
 
 /// The FEM region's Gauss points of every process (each keeps those of its own cells up to

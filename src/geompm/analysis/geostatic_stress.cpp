@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "geompm/analysis/region_test.hpp"
+#include "geompm/core/agreement.hpp"
 
 namespace geompm {
 
@@ -109,14 +111,30 @@ bool in_procedure(const MaterialPoints& points, const std::vector<Index>& bodies
   return std::find(bodies.begin(), bodies.end(), points.body[p]) != bodies.end();
 }
 
-// The lowest point of the procedure's soil (-1: none).
-Index lowest_point(const MaterialPoints& points, const std::vector<Index>& bodies, int v) {
+// The position of the lowest point of the procedure's soil over every process's points
+// (collective; none: no such point). Of points equally low, the first seeded (the lowest id), as
+// on one process.
+std::optional<Vec3> lowest_point(const MaterialPoints& points, const std::vector<Index>& bodies,
+                                 int v, const Communicator& processes) {
   Index lowest = -1;
   for (Index p = 0; p < points.size(); ++p)
     if (in_procedure(points, bodies, p) &&
         (lowest < 0 || points.position[p](v) < points.position[lowest](v)))
       lowest = p;
-  return lowest;
+  // max of minus the elevation, then of minus the id among the points that low: the lowest id.
+  const double none = -std::numeric_limits<double>::max();
+  double depth = lowest < 0 ? none : -points.position[lowest](v);
+  processes.max(&depth, 1);
+  if (depth == none) return std::nullopt;
+  const bool here = lowest >= 0 && -points.position[lowest](v) == depth;
+  double first = here ? -static_cast<double>(points.id[lowest]) : none;
+  processes.max(&first, 1);
+  // Its position from its process: the others add zeros, which leave it exact.
+  std::vector<double> x(3, 0.0);
+  if (here && -static_cast<double>(points.id[lowest]) == first)
+    for (int d = 0; d < 3; ++d) x[d] = points.position[lowest](d);
+  processes.sum(x);
+  return Vec3(x[0], x[1], x[2]);
 }
 
 /// The K0 procedure's reference vertical: its soil profile and what the points are measured
@@ -253,7 +271,7 @@ SoilProfile soil_profile(const Model& model, const std::vector<Index>& bodies,
   return profile_from(model, SoilLocator(model, bodies), through);
 }
 
-void apply_k0_procedure(Model& model) {
+void apply_k0_procedure(Model& model, const Communicator& processes) {
   const spec::Model& spec = model.spec;
   if (spec.phases.empty() || !spec.phases.front().k0_procedure) return;
   const spec::Phase& phase = spec.phases.front();
@@ -265,23 +283,26 @@ void apply_k0_procedure(Model& model) {
 
   const std::vector<Index> bodies = procedure_bodies(spec, procedure);
   // The reference vertical: through the lowest point of the procedure's soil.
-  const Index lowest = lowest_point(points, bodies, v);
-  if (lowest < 0) return;  // every body holds points (build_model), so not reached
+  const std::optional<Vec3> lowest = lowest_point(points, bodies, v, processes);
+  if (!lowest) return;  // every body holds points (build_model), so not reached
   const SoilLocator soil(model, bodies);
-  const ReferenceVertical reference =
-      reference_vertical(model, soil, points.position[lowest], g, where);
+  const ReferenceVertical reference = reference_vertical(model, soil, *lowest, g, where);
 
-  for (Index p = 0; p < points.size(); ++p) {
-    if (!in_procedure(points, bodies, p)) continue;
-    const Vec3& x = points.position[p];
-    const Index material = points.material[p];
-    const std::string& body = spec.bodies[points.body[p]].name;
-    const std::string name = spec.materials[material].name;
-    const std::string point =
-        fmt::format("the point at {} of body '{}' (material '{}')", position(x, dim), body, name);
-    check_level_ground(model, soil, reference, where, point, x, material);
-    set_geostatic_stress(model, procedure, reference, g, p, point);
-  }
+  // This process's points; every process learns whether one was refused on any
+  // (core/agreement.hpp).
+  together(processes, [&] {
+    for (Index p = 0; p < points.size(); ++p) {
+      if (!in_procedure(points, bodies, p)) continue;
+      const Vec3& x = points.position[p];
+      const Index material = points.material[p];
+      const std::string& body = spec.bodies[points.body[p]].name;
+      const std::string name = spec.materials[material].name;
+      const std::string point =
+          fmt::format("the point at {} of body '{}' (material '{}')", position(x, dim), body, name);
+      check_level_ground(model, soil, reference, where, point, x, material);
+      set_geostatic_stress(model, procedure, reference, g, p, point);
+    }
+  });
 }
 
 }  // namespace geompm

@@ -33,8 +33,10 @@ struct SoilProfile {
 /// (a point above the surface found on the reference vertical, a point whose material is not the
 /// one found at its elevation on that vertical, soil that does not reach the surface above a
 /// point, a gap in the soil), when a material cannot start from a stress, or when a point's
-/// stress lies outside its material's yield surface.
-void apply_k0_procedure(Model& model);
+/// stress lies outside its material's yield surface. In a distributed run, pass its processes
+/// (collective): the reference vertical is found from every process's points, and every process
+/// throws the error one met.
+void apply_k0_procedure(Model& model, const Communicator& processes = serial_communicator());
 
 /// The profile of the procedure's bodies along the vertical through `through` (built by
 /// sampling and bisection; exact to round-off at the interfaces of boxes, polygons, layers and

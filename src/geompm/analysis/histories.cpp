@@ -1,5 +1,6 @@
 #include "geompm/analysis/histories.hpp"
 
+#include <array>
 #include <limits>
 
 #include "geompm/core/tensor.hpp"
@@ -91,10 +92,12 @@ double structure_value(const Model& model, const spec::History& h, const StepRes
 
 }  // namespace
 
-double HistoryRecorder::point_set_mean(const Model& model, int set, int component,
-                                       const std::vector<Vec3>& field) const {
-  // Mass-weighted mean over the set (volume-weighted for a weightless set).
-  const auto& p = model.points;
+namespace {
+
+// Sum of w f and of w over point set `set`, w the mass (the volume for a weightless point): a
+// mass-weighted mean (volume-weighted for a weightless set).
+std::array<double, 2> point_set_sums(const MaterialPoints& p, int set, int component,
+                                     const std::vector<Vec3>& field) {
   double sum = 0.0, weight = 0.0;
   for (Index i = 0; i < p.size(); ++i)
     if (p.sets[i] >> set & 1u) {
@@ -102,27 +105,59 @@ double HistoryRecorder::point_set_mean(const Model& model, int set, int componen
       sum += w * field[i](component);
       weight += w;
     }
-  return weight > 0 ? sum / weight : std::numeric_limits<double>::quiet_NaN();
+  return {sum, weight};
 }
 
-std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
+// The history's value from its sums: a mean (NaN over no point, all of its points left the mesh)
+// or an energy.
+double from_sums(const spec::History& h, const std::vector<double>& sums, std::size_t k) {
+  if (h.quantity == "kinetic_energy" || h.quantity == "strain_energy") return sums[2 * k];
+  const double weight = sums[2 * k + 1];
+  return weight > 0 ? sums[2 * k] / weight : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool reads_points(const spec::History& h) {
+  // (A boundary's displacement is what its grid motions prescribed.)
+  return h.structure.empty() && ((h.quantity == "displacement" && h.boundary.empty()) ||
+                                 h.quantity == "velocity" || h.quantity == "position" ||
+                                 h.quantity == "kinetic_energy" || h.quantity == "strain_energy");
+}
+
+}  // namespace
+
+std::vector<double> HistoryRecorder::point_sums(const Model& model,
+                                                const Communicator& processes) const {
+  const MaterialPoints& p = model.points;
+  std::vector<double> sums(2 * histories_.size(), 0.0);
+  for (std::size_t k = 0; k < histories_.size(); ++k) {
+    const spec::History& h = histories_[k];
+    if (!reads_points(h)) continue;
+    std::array<double, 2> s = {0.0, 0.0};
+    if (h.quantity == "kinetic_energy")
+      s[0] = kinetic_energy(model);
+    else if (h.quantity == "strain_energy")
+      s[0] = strain_energy(model);
+    else
+      s = point_set_sums(p, set_bits_[k], h.component,
+                         h.quantity == "displacement" ? p.displacement
+                         : h.quantity == "velocity"   ? p.velocity
+                                                      : p.position);
+    sums[2 * k] = s[0];
+    sums[2 * k + 1] = s[1];
+  }
+  processes.sum(sums);
+  return sums;
+}
+
+std::vector<double> HistoryRecorder::initial_values(const Model& model,
+                                                    const std::vector<double>& sums) const {
   std::vector<double> v = {0.0, 0.0};
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
     if (!h.structure.empty())
       v.push_back(structure_value(model, h, nullptr));
-    else if (h.quantity == "displacement" && !h.boundary.empty())
-      v.push_back(0.0);
-    else if (h.quantity == "displacement")
-      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.displacement));
-    else if (h.quantity == "velocity")
-      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.velocity));
-    else if (h.quantity == "position")
-      v.push_back(point_set_mean(model, set_bits_[k], h.component, model.points.position));
-    else if (h.quantity == "kinetic_energy")
-      v.push_back(kinetic_energy(model));
-    else if (h.quantity == "strain_energy")
-      v.push_back(strain_energy(model));
+    else if (reads_points(h))
+      v.push_back(from_sums(h, sums, k));
     else
       v.push_back(0.0);
   }
@@ -132,7 +167,7 @@ std::vector<double> HistoryRecorder::initial_values(const Model& model) const {
 std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem& grid,
                                             const StepResult& step, const PhaseContext& phase,
                                             double phase_time, double time, int step_number,
-                                            double dt) const {
+                                            double dt, const std::vector<double>& sums) const {
   std::vector<double> v = {time, double(step_number)};
   for (std::size_t k = 0; k < histories_.size(); ++k) {
     const auto& h = histories_[k];
@@ -157,19 +192,11 @@ std::vector<double> HistoryRecorder::values(const Model& model, const GridSystem
       // What the grid motions of the boundary have prescribed so far (docs/theory.md §5.3).
       if (auto it = model.grid_displacement.find(h.boundary); it != model.grid_displacement.end())
         value = it->second(h.component);
-    } else if (h.quantity == "displacement") {
-      value = point_set_mean(model, set_bits_[k], h.component, model.points.displacement);
-    } else if (h.quantity == "velocity") {
-      value = point_set_mean(model, set_bits_[k], h.component, model.points.velocity);
-    } else if (h.quantity == "position") {
-      value = point_set_mean(model, set_bits_[k], h.component, model.points.position);
+    } else if (reads_points(h)) {
+      value = from_sums(h, sums, k);
     } else if (h.quantity == "load") {
       for (const auto& load : phase.loads)
         if (load.set == set_bits_[k]) value += phase.load(load, phase_time)(h.component);
-    } else if (h.quantity == "kinetic_energy") {
-      value = kinetic_energy(model);
-    } else if (h.quantity == "strain_energy") {
-      value = strain_energy(model);
     } else if (h.quantity == "newton_iterations") {
       value = step.newton.iterations;
     } else if (h.quantity == "time_step") {

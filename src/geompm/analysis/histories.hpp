@@ -17,17 +17,21 @@ class HistoryRecorder {
   explicit HistoryRecorder(const Model& model);
   /// "time", "step", then one column per requested history.
   std::vector<std::string> columns() const;
-  /// Values after a converged step (`grid` still holds that step's grid).
+  /// What the histories read of the points, summed over the model's points: per history, the
+  /// weighted sum of a point set's field and the sum of its weights (a mean's numerator and
+  /// denominator), or an energy and 0. In a distributed run, pass its processes (collective):
+  /// each sums its own points and the sums are reduced, the points never gathered.
+  std::vector<double> point_sums(const Model& model,
+                                 const Communicator& processes = serial_communicator()) const;
+  /// Values after a converged step (`grid` still holds that step's grid), with the points' part
+  /// from `sums` (point_sums).
   std::vector<double> values(const Model& model, const GridSystem& grid, const StepResult& step,
                              const PhaseContext& phase, double phase_time, double time,
-                             int step_number, double dt) const;
+                             int step_number, double dt, const std::vector<double>& sums) const;
   /// Values of the initial state (time 0, step 0): reactions and iterations are 0.
-  std::vector<double> initial_values(const Model& model) const;
+  std::vector<double> initial_values(const Model& model, const std::vector<double>& sums) const;
 
  private:
-  double point_set_mean(const Model& model, int set, int component,
-                        const std::vector<Vec3>& field) const;
-
   std::vector<spec::History> histories_;
   std::vector<int> set_bits_;
 };

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
+#include <functional>
 #include <limits>
 
+#include "geompm/analysis/body_seeding.hpp"
+#include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/fem_region_seeding.hpp"
 #include "geompm/analysis/geostatic_stress.hpp"
 #include "geompm/analysis/initial_stress.hpp"
@@ -14,6 +16,7 @@
 #include "geompm/analysis/region_test.hpp"
 #include "geompm/boundary/fixities.hpp"
 #include "geompm/boundary/grid_motions.hpp"
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/byte_archive.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/core/expression.hpp"
@@ -21,7 +24,6 @@
 #include "geompm/mesh/gmsh_import.hpp"
 #include "geompm/mesh/rectilinear_grid.hpp"
 #include "geompm/mesh/structured_mesh.hpp"
-#include "geompm/points/seeding.hpp"
 #include "geompm/structures/structure_builder.hpp"
 
 namespace geompm {
@@ -273,119 +275,18 @@ void check_body_inside_mesh(const spec::Body& body, const RegionTest& region,
   }
 }
 
-// Tri6's corner shape functions are negative over part of the cell: a point there gives its
-// corner nodes negative mass and load. Measured: 2.3 times the settlement once the points cross
-// cells, DDMP stops, a K0 state 19 % out of balance on the N_gamma footing. Material points
-// need linear cells; tri6 serves FEM regions and structures, integrated at Gauss points.
-void check_cell_carries_points(const spec::Body& body, const Mesh& mesh, Index c) {
-  if (mesh.type_of(c) != CellType::Tri6) return;
-  throw InputError(
-      body.region.source,
-      fmt::format("body '{}' would put material points in tri6 cell {} (an MPM "
-                  "cell), but material points need linear cells (tri3, quad4; tet4, "
-                  "hex8, pyramid5): tri6 corner shape functions give nodes negative mass; make "
-                  "the body's tri6 cells an FEM region (regions: {{kind: fem}}) or "
-                  "use tri3 or quad4",
-                  body.name, c));
-}
-
-// One material point of body b at a seeding position of cell c: its material (by its layer),
-// its point-dependent state and its initial velocity.
-void add_body_point(const spec::Model& spec, std::size_t b, const SeedPoint& s, Index c,
-                    const std::array<Expression, 3>& v0, Model& model) {
-  const spec::Body& body = spec.bodies[b];
-  const int dim = model.mesh.dim();
-  const Index material = body_material_at(spec, body, s.position(dim - 1));
-  const Index p = model.points.add(static_cast<Index>(b), material, s.position, s.volume,
-                                   model.materials[material]->density(), c, s.xi, s.half_size);
-  // Point-dependent state, e.g. a strength growing with depth.
-  try {
-    model.materials[material]->initialise_point(s.position, dim, model.points.internal[p]);
-  } catch (const ParameterError& e) {
-    SourceLocation where = spec.materials[material].source;
-    where.key_path += "." + e.key();
-    throw InputError(where,
-                     fmt::format("{} (at the point x = [{:g}, {:g}, {:g}] of body '{}')", e.what(),
-                                 s.position.x(), s.position.y(), s.position.z(), body.name));
-  }
-  for (int d = 0; d < dim; ++d)
-    model.points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
-}
-
-// The material points of body b: the seeding positions of every cell inside its region,
-// which none of the bodies before it (`regions` 0..b-1) may hold as well. `regions[b]` is its
-// own.
-void seed_body(const spec::Model& spec, std::size_t b, const std::vector<RegionTest>& regions,
-               const std::vector<PointLocator>& structures, Model& model) {
-  const spec::Body& body = spec.bodies[b];
-  const Mesh& mesh = model.mesh;
-  const bool axisymmetric = spec.kinematics == Kinematics::Axisymmetric;
-  std::array<Expression, 3> v0;
-  for (int d = 0; d < 3; ++d)
-    v0[d] = Expression(body.initial_velocity[d],
-                       fmt::format("{}.initial_velocity[{}]", body.source.describe(), d));
-
-  const Index before = model.points.size();
-  bool fem_cells = false;  // the body holds FEM cells, seeded at their Gauss points
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (body.region.kind == spec::Region::Kind::Group && !regions[b].contains(Vec3::Zero(), c))
-      continue;
-    // FEM and buffer cells get no material points (docs/theory.md §19).
-    if (!model.cell_kinds.empty() && model.cell_kinds[c] != CellKind::Mpm) {
-      fem_cells = fem_cells || model.cell_kinds[c] == CellKind::Fem;
-      continue;
-    }
-    std::vector<SeedPoint> seeds;
-    try {
-      const int count = body.points_per_cell > 0 ? body.points_per_cell
-                                                 : default_points_per_cell(mesh.type_of(c));
-      seeds = seed_cell(mesh, c, count, axisymmetric);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(body.points_per_cell_source, e.what());
-    }
-    for (const auto& s : seeds) {
-      if (!regions[b].contains(s.position, c)) continue;
-      check_cell_carries_points(body, mesh, c);
-      // A structure that starts inside the soil takes the soil's place (docs/theory.md §17.1).
-      if (std::any_of(structures.begin(), structures.end(),
-                      [&](const PointLocator& inside) { return inside.locate(s.position); })) {
-        ++model.seeds_inside_structures[b];
-        continue;
-      }
-      for (std::size_t other = 0; other < b; ++other)
-        if (regions[other].contains(s.position, c))
-          throw InputError(
-              body.region.source,
-              fmt::format("bodies '{}' and '{}' overlap (at x = [{:g}, {:g}, {:g}])", body.name,
-                          spec.bodies[other].name, s.position.x(), s.position.y(), s.position.z()));
-      add_body_point(spec, b, s, c, v0, model);
-    }
-  }
-  if (model.points.size() == before && !fem_cells)
-    throw InputError(body.region.source,
-                     fmt::format("body '{}' has no material points: its region holds no "
-                                 "seeding position of any cell",
-                                 body.name));
-}
-
-void seed_bodies(const spec::Model& spec, Model& model) {
-  const Mesh& mesh = model.mesh;
+// Every body inside the mesh, before it is seeded.
+void check_bodies_inside_mesh(const spec::Model& spec, const Mesh& mesh) {
   const int dim = mesh.dim();
   const MeshBounds mesh_box = mesh_bounds(mesh);
-  std::vector<RegionTest> body_regions;
-  std::vector<PointLocator> structures;  // a locator of each structure's cells: inside it or not
-  for (const auto& structure : model.structures) structures.emplace_back(structure->mesh().mesh());
-  model.seeds_inside_structures.assign(spec.bodies.size(), 0);
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
-    body_regions.emplace_back(spec.bodies[b].region, mesh, dim);
-    check_body_inside_mesh(spec.bodies[b], body_regions.back(), mesh_box, dim);
-    seed_body(spec, b, body_regions, structures, model);
-  }
+  for (const spec::Body& body : spec.bodies)
+    check_body_inside_mesh(body, RegionTest(body.region, mesh, dim), mesh_box, dim);
 }
 
 // Point set k as bit k of each point's set mask: the points of its body (any, if it names
-// none) in its region.
-void add_point_sets(const spec::Model& spec, Model& model) {
+// none) in its region; of every process's points (collective), so that a set whose points all lie
+// in another process's cells is no empty set.
+void add_point_sets(const spec::Model& spec, Model& model, const Communicator& processes) {
   const Mesh& mesh = model.mesh;
   const int dim = mesh.dim();
   if (spec.point_sets.size() > 64)
@@ -404,7 +305,7 @@ void add_point_sets(const spec::Model& spec, Model& model) {
       model.points.sets[p] |= std::uint64_t{1} << k;
       ++count;
     }
-    if (count == 0)
+    if (processes.sum(count) == 0)
       throw InputError(set.source, fmt::format("point set '{}' holds no material point", set.name));
   }
 }
@@ -445,26 +346,35 @@ void check_structure_reaches_mesh(const Model& model, std::size_t s, const spec:
 }
 
 // Adhesion as a fraction alpha of s_u needs soil that has one: every material the touched bodies'
-// points carry must keep an undrained strength per point (Tresca's internal variable "su").
+// points carry must keep an undrained strength per point (Tresca's internal variable "su"). The
+// first such point of every process's (collective) names the material that has none.
 void check_adhesion_strength(const Model& model, const ContactPair& pair,
-                             const spec::Contact& contact) {
+                             const spec::Contact& contact, const Communicator& processes) {
   if (!(pair.law.alpha > 0.0)) return;
-  std::vector<char> checked(model.materials.size(), 0);
+  // Per material, minus the first id of a touched point that carries it (max: the first of all).
+  std::vector<double> first(model.materials.size(), -std::numeric_limits<double>::max());
   for (Index p = 0; p < model.points.size(); ++p) {
     const Index body = model.points.body[p], m = model.points.material[p];
-    if ((!pair.bodies.empty() && !pair.bodies[body]) || checked[m]) continue;
-    checked[m] = 1;
+    if (!pair.bodies.empty() && !pair.bodies[body]) continue;
+    first[m] = std::max(first[m], -static_cast<double>(model.points.id[p]));
+  }
+  processes.max(first.data(), first.size());
+  std::size_t lacking = first.size();
+  for (std::size_t m = 0; m < first.size(); ++m) {
+    if (first[m] == -std::numeric_limits<double>::max()) continue;  // carried by no touched point
     const Material& material = *model.materials[m];
     bool has_su = false;
     for (int k = 0; k < material.internal_variable_count(); ++k)
       has_su |= std::string(material.internal_variable_name(k)) == "su";
-    if (!has_su)
-      throw InputError(contact.source,
-                       fmt::format("contact of '{}': alpha needs soil with an undrained strength "
-                                   "s_u (model tresca), but material '{}' is {}; give the "
-                                   "adhesion as a stress instead (adhesion: ...)",
-                                   pair.name, model.spec.materials[m].name, material.model_name()));
+    if (!has_su && (lacking == first.size() || first[m] > first[lacking])) lacking = m;
   }
+  if (lacking == first.size()) return;
+  throw InputError(contact.source,
+                   fmt::format("contact of '{}': alpha needs soil with an undrained strength "
+                               "s_u (model tresca), but material '{}' is {}; give the "
+                               "adhesion as a stress instead (adhesion: ...)",
+                               pair.name, model.spec.materials[lacking].name,
+                               model.materials[lacking]->model_name()));
 }
 
 // A structure's contact with the soil (docs/theory.md §18) as the model file gives it.
@@ -492,7 +402,20 @@ ContactPair contact_pair(const spec::Model& spec, const spec::Structure& structu
   return pair;
 }
 
-std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
+// Work on this process's points that may meet bad input at a point; in a distributed run every
+// process learns whether it did on any (core/agreement.hpp). An expression evaluated there (initial
+// velocities and stresses) that gives no finite value is bad input, found by `geompm check`.
+void on_own_points(const Communicator& processes, const std::function<void()>& work) {
+  together(processes, [&] {
+    try {
+      work();
+    } catch (const NonFiniteValue& e) {
+      throw InputError(e.what());
+    }
+  });
+}
+
+std::unique_ptr<Model> build_model_parts(const spec::Model& spec, const Communicator& processes) {
   check_model_size(spec);  // before the first allocation that could not fit
   auto model = std::make_unique<Model>();
   model->spec = spec;
@@ -511,25 +434,32 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec) {
     check_structure_reaches_mesh(*model, model->structures.size() - 1, structure);
   }
   build_fem_region(spec, *model);
-  seed_bodies(spec, *model);
-  add_point_sets(spec, *model);
+  // The points counted in every cell, the cells cut among the processes by them, and each process
+  // seeds its own (analysis/body_seeding.hpp).
+  check_bodies_inside_mesh(spec, mesh);
+  const SeedCensus census = count_body_points(*model);
+  if (processes.distributed())
+    model->cell_part = partition_by_work(*model, census.points_in_cell(), processes.size());
+  on_own_points(processes,
+                [&] { seed_own_cells(census, model->cell_part, processes.rank(), *model); });
+  add_point_sets(spec, *model, processes);
   check_boundaries(spec, mesh);
   for (std::size_t s = 0; s < spec.structures.size(); ++s)
-    check_adhesion_strength(*model, model->contacts[s], spec.structures[s].contact);
+    check_adhesion_strength(*model, model->contacts[s], spec.structures[s].contact, processes);
   // Initial stresses given directly, and the geostatic stresses of the first phase's K0 procedure
   // (docs/theory.md §10), before any step.
-  apply_initial_stresses(*model);
-  apply_k0_procedure(*model);
+  on_own_points(processes, [&] { apply_initial_stresses(*model); });
+  apply_k0_procedure(*model, processes);
   return model;
 }
 
 }  // namespace
 
-std::unique_ptr<Model> build_model(const spec::Model& spec) {
+std::unique_ptr<Model> build_model(const spec::Model& spec, const Communicator& processes) {
   // An expression evaluated while the model is built (initial velocities and stresses) that
   // gives no finite value is bad input, found by `geompm check`.
   try {
-    return build_model_parts(spec);
+    return build_model_parts(spec, processes);
   } catch (const NonFiniteValue& e) {
     throw InputError(e.what());
   }
@@ -547,21 +477,40 @@ std::string dynamics_description(const spec::Dynamics& dynamics) {
 
 }  // namespace
 
-std::string describe_model(const Model& model) {
+namespace {
+
+/// The counts and sums describe_model reports, over every process's points: the points, their
+/// volume and mass, then the points of each body and of each point set.
+std::vector<double> point_totals(const Model& model, const Communicator& processes) {
+  const MaterialPoints& points = model.points;
+  const std::size_t bodies = model.spec.bodies.size();
+  std::vector<double> totals(3 + bodies + model.point_set_names.size(), 0.0);
+  totals[0] = static_cast<double>(points.size());
+  for (Index p = 0; p < points.size(); ++p) {
+    totals[1] += points.volume[p];
+    totals[2] += points.mass[p];
+    totals[3 + points.body[p]] += 1.0;
+    for (std::size_t k = 0; k < model.point_set_names.size(); ++k)
+      totals[3 + bodies + k] += (points.sets[p] >> k) & 1u;
+  }
+  processes.sum(totals);
+  return totals;
+}
+
+}  // namespace
+
+std::string describe_model(const Model& model, const Communicator& processes) {
   const auto& spec = model.spec;
+  const std::vector<double> totals = point_totals(model, processes);
+  const auto count_of = [&](std::size_t k) { return static_cast<Index>(totals[k]); };
   std::string out;
   out += fmt::format("model      {}{}\n", spec.file, spec.title.empty() ? "" : " — " + spec.title);
   out += fmt::format("analysis   {}\n", to_string(spec.kinematics));
   out += fmt::format("mesh       {} {} cells, {} nodes{}\n", model.mesh.num_cells(),
                      cell_type_names(model.mesh), model.mesh.num_nodes(),
                      spec.mesh.file.empty() ? " (generated)" : " from " + spec.mesh.file);
-  double mass = 0.0, volume = 0.0;
-  for (Index p = 0; p < model.points.size(); ++p) {
-    mass += model.points.mass[p];
-    volume += model.points.volume[p];
-  }
-  out += fmt::format("points     {} (volume {:.6g}{}, mass {:.6g})\n", model.points.size(), volume,
-                     spec.kinematics == Kinematics::Axisymmetric ? " per radian" : "", mass);
+  out += fmt::format("points     {} (volume {:.6g}{}, mass {:.6g})\n", count_of(0), totals[1],
+                     spec.kinematics == Kinematics::Axisymmetric ? " per radian" : "", totals[2]);
   for (std::size_t m = 0; m < spec.materials.size(); ++m) {
     std::string params;
     for (const auto& [k, v] : spec.materials[m].parameters) params += fmt::format(" {}={:g}", k, v);
@@ -569,8 +518,7 @@ std::string describe_model(const Model& model) {
                        params, describe(material_formulation(spec, model.mesh, spec.materials[m])));
   }
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
-    Index count = 0;
-    for (Index p = 0; p < model.points.size(); ++p) count += model.points.body[p] == Index(b);
+    const Index count = count_of(3 + b);
     const auto& body = spec.bodies[b];
     std::string material = "material " + body.material;
     if (!body.layers.empty()) {
@@ -591,8 +539,7 @@ std::string describe_model(const Model& model) {
                        material);
   }
   for (std::size_t k = 0; k < model.point_set_names.size(); ++k) {
-    Index count = 0;
-    for (Index p = 0; p < model.points.size(); ++p) count += (model.points.sets[p] >> k) & 1u;
+    const Index count = count_of(3 + spec.bodies.size() + k);
     out += fmt::format("point set  {}: {} points\n", model.point_set_names[k], count);
   }
   for (const auto& structure : model.structures)

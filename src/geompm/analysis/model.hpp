@@ -35,6 +35,10 @@ struct Model {
   /// The FEM cells and their Gauss points; null without FEM cells.
   std::unique_ptr<FemRegion> fem;
   std::vector<std::string> point_set_names;  // bit k of MaterialPoints::sets
+  /// Per mesh cell, the process that owns it in a distributed run, cut by the points seeding puts
+  /// in each cell (a resumed run: the checkpoint's): `points` holds only this process's cells'.
+  /// Empty when the model is built for one process (mesh/partition.hpp).
+  std::vector<int> cell_part;
   /// The structures (docs/theory.md §17), in the order of spec.structures; they move with the
   /// steps that converge (their state is saved by Structure::save).
   std::vector<std::unique_ptr<Structure>> structures;
@@ -76,9 +80,17 @@ Index body_material_at(const spec::Model& spec, const spec::Body& body, double e
 /// anything the reader could not check alone (a region group the mesh lacks, a body outside the
 /// mesh or with no points, overlapping bodies, an empty point set, a fixity boundary the mesh
 /// lacks, a node set holding no node, a node driven twice).
-std::unique_ptr<Model> build_model(const spec::Model& spec);
+///
+/// Given the processes of a distributed run (collective), each builds the same model but seeds
+/// only the points of its own cells (`cell_part`), with the ids and values of the serial run;
+/// every process then throws the same error for bad input.
+std::unique_ptr<Model> build_model(const spec::Model& spec,
+                                   const Communicator& processes = serial_communicator());
 
-/// The summary `geompm check` prints: mesh, points, materials, bodies, phases.
-std::string describe_model(const Model& model);
+/// The summary `geompm check` and `geompm run` print: mesh, points, materials, bodies, phases.
+/// In a distributed run, pass its processes: the counts and sums are of every process's points
+/// (collective).
+std::string describe_model(const Model& model,
+                           const Communicator& processes = serial_communicator());
 
 }  // namespace geompm

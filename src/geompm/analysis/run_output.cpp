@@ -129,10 +129,10 @@ void OutputWriter::newton_log(int step_number, double time, double dt, const Ste
   }
 }
 
-void OutputWriter::initial() {
+void OutputWriter::initial(const std::vector<double>& point_sums) {
   // vtk: {every: 0} writes no ParaView file at all
   if (model_.spec.output.vtk_every > 0) write_structures(0.0, 0);
-  append_history(recorder_.initial_values(model_));
+  append_history(recorder_.initial_values(model_, point_sums));
 }
 
 void OutputWriter::list_points(double time, const std::string& points, const std::string& gauss) {
@@ -146,8 +146,10 @@ bool OutputWriter::lists_points(const std::string& points) const {
 }
 
 void OutputWriter::step(GridSystem& grid, const StepResult& step, const PhaseContext& phase,
-                        double phase_time, double time, int step_number, double dt, bool vtk) {
-  append_history(recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt));
+                        double phase_time, double time, int step_number, double dt, bool vtk,
+                        const std::vector<double>& point_sums) {
+  append_history(
+      recorder_.values(model_, grid, step, phase, phase_time, time, step_number, dt, point_sums));
   if (!vtk) return;
   write_structures(time, step_number);
   if (model_.spec.output.vtk_grid) {

@@ -36,11 +36,14 @@ class OutputWriter {
 
   /// Every Newton attempt, converged or cut back: one row per iteration in newton.csv.
   void newton_log(int step_number, double time, double dt, const StepResult& step);
-  /// The initial state (step 0): the structures' ParaView files and the history's first row.
-  void initial();
-  /// A converged step: its history row and, if `vtk`, its ParaView files but the points'.
+  /// The initial state (step 0): the structures' ParaView files and the history's first row,
+  /// whose points' part is `point_sums` (HistoryRecorder::point_sums, of every process).
+  void initial(const std::vector<double>& point_sums);
+  /// A converged step: its history row (`point_sums` as for initial) and, if `vtk`, its ParaView
+  /// files but the points'.
   void step(GridSystem& grid, const StepResult& step, const PhaseContext& phase, double phase_time,
-            double time, int step_number, double dt, bool vtk);
+            double time, int step_number, double dt, bool vtk,
+            const std::vector<double>& point_sums);
   /// The points' files of a step (PointOutput::Files: the points', the Gauss points' or empty),
   /// written: they join the series.
   void list_points(double time, const std::string& points, const std::string& gauss);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/motion_check.hpp"
@@ -58,12 +59,15 @@ Simulation::Simulation(Model& model, const RunOptions& options)
       options_(options),
       processes_(options.communicator ? *options.communicator : serial_communicator()),
       solver_(make_linear_solver(model, processes_)),
-      stepper_(model, *solver_),
+      stepper_(model, *solver_, processes_),
+      histories_(model),
       progress_(options.log, options.progress),
       started_(Clock::now()),
       phase_started_(started_),
       last_checkpoint_(started_),
       kill_in_checkpoint_(kill_in_checkpoint()) {
+  if (processes_.distributed() && model.cell_part.size() != std::size_t(model.mesh.num_cells()))
+    throw std::logic_error("a distributed run needs the model built for its processes");
   summary_.model_file = model.spec.file;
   summary_.linear_solver = model.spec.numerics.linear_solver;
   summary_.model_hash = options.model_hash;
@@ -93,22 +97,23 @@ void Simulation::with_all_points(Write&& write) const {
   });
 }
 
-void Simulation::distribute_points() {
+void Simulation::distribute_points(std::vector<int> cell_part) {
   if (!processes_.distributed()) return;
-  std::vector<int> cell_part = partition_by_points(model_, processes_.size());
+  model_.cell_part = cell_part;  // a resumed run's cut is made anew
   keep_own_points(model_.points, cell_part, processes_.rank());
   if (model_.fem) model_.fem->keep_own(cell_part, processes_.rank());
   stepper_.distribute(processes_, std::move(cell_part));
 }
 
 void Simulation::start() {
-  // Every process holds every point until they are shared out, after the initial history row.
-  // Process 0 writes it; the others learn whether it could (an output directory that cannot be
+  // Each process holds its own cells' points from the start (build_model). Process 0 writes the
+  // initial history row; the others learn whether it could (an output directory that cannot be
   // used).
+  const std::vector<double> sums = histories_.point_sums(model_, processes_);
   together(processes_, [&] {
-    if (writes_files()) start_output();
+    if (writes_files()) start_output(sums);
   });
-  distribute_points();
+  distribute_points(model_.cell_part);
   point_output_ = std::make_unique<PointOutput>(model_, options_.output_dir, processes_);
   if (model_.spec.output.vtk_every > 0) write_points();
 }
@@ -120,7 +125,7 @@ void Simulation::write_points() {
   });
 }
 
-void Simulation::start_output() {
+void Simulation::start_output(const std::vector<double>& point_sums) {
   // What an earlier run in the same directory left must not be mistaken for this run's: its
   // checkpoint (a later --resume would go back to it), its summary, ParaView files, plots and
   // history, a half-written checkpoint, the temporaries of files being written when it was killed.
@@ -136,7 +141,7 @@ void Simulation::start_output() {
   std::filesystem::remove(checkpoint_temporary(checkpoint));
   std::filesystem::remove(options_.output_dir / "summary.json");
   output_ = std::make_unique<OutputWriter>(model_, options_.output_dir);
-  output_->initial();
+  output_->initial(point_sums);
   summary_.history_file = output_->history_file();
 }
 
@@ -151,8 +156,8 @@ void Simulation::resume() {
           checkpoint.string()));
     load(checkpoint);
   });
-  // Whatever rank count wrote it: the checkpoint holds every point; the cut is made anew.
-  distribute_points();
+  // Each process has read its own cells' points, cut anew (load).
+  distribute_points(std::move(resumed_cell_part_));
   point_output_ = std::make_unique<PointOutput>(model_, options_.output_dir, processes_);
   together(processes_, [&] {
     if (writes_files()) resume_output(checkpoint);
@@ -306,16 +311,13 @@ void Simulation::accept(const StepResult& step, double dt) {
   const bool vtk = vtk_every > 0 && (step_number_ % vtk_every == 0 || phase_done);
   if (vtk_every > 0) point_output_->after_step();
   if (vtk) write_points();
-  // A distributed run gathers the points only for the histories, which read them.
-  const auto write_step = [&] {
-    output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk);
-  };
-  if (!model_.spec.output.histories.empty())
-    with_all_points(write_step);
-  else
-    together(processes_, [&] {
-      if (output_) write_step();
-    });
+  // The histories' sums over the points of every process (reduced, not gathered).
+  const std::vector<double> sums = histories_.point_sums(model_, processes_);
+  together(processes_, [&] {
+    if (output_)
+      output_->step(stepper_.grid(), step, *phase_, control_->time(), time_, step_number_, dt, vtk,
+                    sums);
+  });
   update_clocks();
 
   double total_duration = 0.0;

@@ -52,7 +52,9 @@ class Simulation {
 
  private:
   /// Process 0's part of start(), resume() and finish(): the output directory and files.
-  void start_output();
+  /// The output directory made ready and the initial history row written, the points' part from
+  /// `point_sums` (HistoryRecorder::point_sums).
+  void start_output(const std::vector<double>& point_sums);
   void resume_output(const std::filesystem::path& checkpoint);
   void finish_output(const std::string& stop_reason);
   void begin_phase();
@@ -68,8 +70,9 @@ class Simulation {
   [[noreturn]] void stop_on_interrupt();
   void update_clocks();
   [[noreturn]] void stop(const std::string& message);
-  /// Distributed: cuts the mesh by the points every process holds now and keeps this process's.
-  void distribute_points();
+  /// Distributed: the cells `cell_part` gives this process are its own; it keeps their points
+  /// (and the FEM region's Gauss points) and works on them.
+  void distribute_points(std::vector<int> cell_part);
   /// The points' ParaView files of the step the run is at, each process its own (collective).
   void write_points();
   /// A stopped run: the points' and structures' ParaView files of the last converged step, if
@@ -84,9 +87,14 @@ class Simulation {
 
   Model& model_;
   RunOptions options_;
+  /// The cut of a resumed run, made while its checkpoint is read (load).
+  std::vector<int> resumed_cell_part_;
   const Communicator& processes_;
   std::unique_ptr<LinearSolver> solver_;
   StepSolver stepper_;
+  /// The histories' sums over the points, which every process adds up for its own (the rows are
+  /// output_'s, on process 0).
+  HistoryRecorder histories_;
   ProgressLine progress_;
   std::unique_ptr<OutputWriter> output_;       // process 0's
   std::unique_ptr<PointOutput> point_output_;  // every process's, once the points are shared out

@@ -3,9 +3,11 @@
 // read every byte, so a layout that drifts from its writer is caught, not misread.
 #include <fmt/format.h>
 
+#include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/simulation.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/checkpoint_file.hpp"
+#include "geompm/points/saved_points.hpp"
 
 namespace geompm {
 
@@ -59,7 +61,8 @@ void Simulation::save(const std::filesystem::path& file) const {
 }
 
 void Simulation::load(const std::filesystem::path& file) {
-  const CheckpointContents contents = read_checkpoint_file(file, options_.model_hash);
+  // The points are left in the file: each process reads those of its own cells only.
+  const CheckpointContents contents = read_checkpoint_file(file, options_.model_hash, {"points"});
   if (contents.geompm_version != GEOMPM_VERSION && options_.log)
     *options_.log << fmt::format("note: {} was written by geompm {}; this is geompm {}\n",
                                  file.string(), contents.geompm_version, GEOMPM_VERSION);
@@ -80,10 +83,18 @@ void Simulation::load(const std::filesystem::path& file) {
   run.get(control.dt);
   run.expect_end();
 
-  ByteReader points = contents.section("points");
-  model_.points.load(points);
   ByteReader model = contents.section("model");
   model_.load_state(model);
+  // Whatever process count wrote it, the cut is made anew by the points in each cell (and the FEM
+  // region's Gauss points, just read), and this process reads its own cells' points.
+  const CheckpointContents::Place place = contents.place("points");
+  const SavedPoints saved(file, place.offset, place.length,
+                          fmt::format("{}: section 'points'", file.string()));
+  resumed_cell_part_.clear();
+  if (processes_.distributed())
+    resumed_cell_part_ =
+        partition_by_work(model_, saved.points_in_cell(model_.mesh.num_cells()), processes_.size());
+  model_.points = saved.load(resumed_cell_part_, processes_.rank());
   // The phase is rebuilt from the model, then given the state its steps had reached.
   phase_ = std::make_unique<PhaseContext>(model_, spec);
   ByteReader phase_state = contents.section("phase");

@@ -19,12 +19,10 @@
 
 namespace geompm {
 
-GridSettings grid_settings(const Model& model) {
+GridSettings grid_settings(const Model& model, const Communicator& processes) {
   GridSettings s;
   s.kinematics = model.kinematics();
-  // Made with the StepSolver, before a distributed run shares the points out (Simulation::start,
-  // resume): every process holds every point here.
-  const double soil_modulus = model.softest_modulus();
+  const double soil_modulus = model.softest_modulus(processes);
   s.empty_cell_modulus = model.spec.numerics.empty_cell_stiffness * soil_modulus;
   s.sparse_node_modulus = model.spec.numerics.sparse_node_stiffness * soil_modulus;
   s.sparse_node_fill = model.spec.numerics.sparse_node_fill;
@@ -207,10 +205,11 @@ bool starts_from_rest(const spec::Model& model, const spec::Phase& phase, double
 
 }  // namespace
 
-StepSolver::StepSolver(Model& model, LinearSolver& solver)
+StepSolver::StepSolver(Model& model, LinearSolver& solver, const Communicator& processes)
     : model_(model),
       solver_(solver),
-      grid_(model.mesh, model.topology, model.material_pointers(), grid_settings(model)) {
+      grid_(model.mesh, model.topology, model.material_pointers(),
+            grid_settings(model, processes)) {
   if (model.fem) relaxation_ = std::make_unique<MeshRelaxation>(model.mesh, *model.fem);
 }
 

@@ -64,11 +64,16 @@ bool writes_boundary(const spec::Model& spec);
 
 /// The grid's settings for a model: kinematics, interpolation, empty-cell stiffness, buffer
 /// layers and, per material, the formulation and the mixed points' volume change.
-GridSettings grid_settings(const Model& model);
+/// The materials' moduli that scale the stiffness of empty cells are those every process's points
+/// carry (`processes`, collective).
+GridSettings grid_settings(const Model& model,
+                           const Communicator& processes = serial_communicator());
 
 class StepSolver {
  public:
-  StepSolver(Model& model, LinearSolver& solver);
+  /// In a distributed run, pass its processes (collective): each holds only its own points.
+  StepSolver(Model& model, LinearSolver& solver,
+             const Communicator& processes = serial_communicator());
 
   /// Advances the model from phase time t0 by dt. If the step converges the points are updated
   /// (and points that left the mesh handled by the model's policy: result.lost lists them; under

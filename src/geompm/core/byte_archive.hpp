@@ -30,6 +30,19 @@ struct is_fixed_eigen<Eigen::Matrix<double, R, C, O, MR, MC>>
     : std::bool_constant<(R > 0 && C > 0)> {};
 }  // namespace archive_detail
 
+/// The bytes a ByteWriter writes for one value of a fixed-size type: a number, a fixed-size Eigen
+/// matrix, or a std::array of these. A reader can step over a vector of them, or into it,
+/// without reading what comes before.
+template <class T>
+constexpr std::size_t archived_bytes() {
+  if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>)
+    return sizeof(T);
+  else if constexpr (archive_detail::is_fixed_eigen<T>::value)
+    return sizeof(double) * T::SizeAtCompileTime;
+  else
+    return std::tuple_size_v<T> * archived_bytes<typename T::value_type>();
+}
+
 class ByteWriter {
  public:
   /// A number, a text, a fixed-size Eigen matrix (Vec3, Mat3), a std::array, a std::pair, or a

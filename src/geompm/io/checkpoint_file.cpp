@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -105,22 +106,96 @@ ByteReader CheckpointContents::section(const std::string& name) const {
                   file, name, checkpoint_format_version));
 }
 
-CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
-                                        std::uint64_t model_hash) {
+CheckpointContents::Place CheckpointContents::place(const std::string& name) const {
+  const auto it = in_file.find(name);
+  if (it == in_file.end())
+    throw InputError(
+        fmt::format("{}: the checkpoint has no section '{}' (damaged, or written by "
+                    "another layout of format version {})",
+                    file, name, checkpoint_format_version));
+  return it->second;
+}
+
+namespace {
+
+// The checkpoint's body, read from the file as it is parsed: a section left in the file is
+// stepped over, never read.
+class BodyCursor {
+ public:
+  BodyCursor(std::ifstream& in, const std::string& name, std::uint64_t end)
+      : in_(in), name_(name), end_(end) {}
+
+  std::uint64_t at() const { return at_; }
+  std::string bytes(std::uint64_t n) {
+    check(n);
+    std::string out(n, '\0');
+    if (n > 0 && !in_.read(out.data(), static_cast<std::streamsize>(n)))
+      throw InputError(fmt::format("{}: cannot read the checkpoint", name_));
+    at_ += n;
+    return out;
+  }
+  template <class T>
+  T number() {
+    const std::string raw = bytes(sizeof(T));
+    ByteReader reader(raw, name_);
+    return reader.get<T>();
+  }
+  std::string text() { return bytes(number<std::uint64_t>()); }
+  void skip(std::uint64_t n) {
+    check(n);
+    in_.seekg(static_cast<std::streamoff>(n), std::ios::cur);
+    at_ += n;
+  }
+
+ private:
+  void check(std::uint64_t n) const {
+    if (n > end_ - at_)
+      throw InputError(
+          fmt::format("{}: damaged checkpoint (needs {} more bytes at byte {} of its "
+                      "contents, has {})",
+                      name_, n, at_, end_ - at_));
+  }
+  std::ifstream& in_;
+  const std::string& name_;
+  std::uint64_t end_, at_ = checkpoint_header_bytes;
+};
+
+// The checksum of the body, read a slice at a time: the checkpoint is never held whole.
+std::uint64_t body_checksum(std::ifstream& in, std::uint64_t length) {
+  std::string slice(std::size_t{1} << 20, '\0');
+  std::uint64_t h = fnv1a_offset_basis;
+  in.seekg(static_cast<std::streamoff>(checkpoint_header_bytes));
+  for (std::uint64_t left = length; left > 0;) {
+    const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(left, slice.size()));
+    if (!in.read(slice.data(), static_cast<std::streamsize>(n))) return ~h;
+    h = fnv1a_64(std::string_view(slice.data(), n), h);
+    left -= n;
+  }
+  return h;
+}
+
+}  // namespace
+
+CheckpointContents read_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
+                                        const std::vector<std::string>& left_in_file) {
   CheckpointContents contents;
   contents.file = file.string();
   const std::string& name = contents.file;
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open the checkpoint", name));
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
 
-  if (bytes.size() < checkpoint_header_bytes)
+  if (size < checkpoint_header_bytes)
     throw InputError(fmt::format("{}: truncated checkpoint ({} bytes; its header alone has {})",
-                                 name, bytes.size(), checkpoint_header_bytes));
-  if (bytes.compare(0, sizeof(checkpoint_magic), checkpoint_magic, sizeof(checkpoint_magic)) != 0)
+                                 name, size, checkpoint_header_bytes));
+  std::string head(checkpoint_header_bytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (head.compare(0, sizeof(checkpoint_magic), checkpoint_magic, sizeof(checkpoint_magic)) != 0)
     throw InputError(fmt::format("{}: not a geompm checkpoint (it does not start with '{}')", name,
                                  std::string(checkpoint_magic, sizeof(checkpoint_magic))));
-  ByteReader header(std::string_view(bytes).substr(sizeof(checkpoint_magic)), name);
+  ByteReader header(std::string_view(head).substr(sizeof(checkpoint_magic)), name);
   const auto format = header.get<std::uint32_t>();
   if (format != checkpoint_format_version)
     throw InputError(
@@ -129,37 +204,46 @@ CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
                     name, format, GEOMPM_VERSION, checkpoint_format_version));
   const auto length = header.get<std::uint64_t>();
   const auto checksum = header.get<std::uint64_t>();
-  const std::uint64_t found = bytes.size() - checkpoint_header_bytes;
+  const std::uint64_t found = size - checkpoint_header_bytes;
   if (found < length)
     throw InputError(fmt::format("{}: truncated checkpoint ({} bytes; its header announces {})",
-                                 name, bytes.size(), checkpoint_header_bytes + length));
+                                 name, size, checkpoint_header_bytes + length));
   if (found > length)
     throw InputError(fmt::format("{}: damaged checkpoint ({} bytes more than its header announces)",
                                  name, found - length));
-  const std::string_view body = std::string_view(bytes).substr(checkpoint_header_bytes);
-  if (fnv1a_64(body) != checksum)
+  if (const std::uint64_t sum = body_checksum(in, length); sum != checksum)
     throw InputError(
         fmt::format("{}: damaged checkpoint: the checksum of its contents ({}) is not "
                     "the one it was written with ({})",
-                    name, fnv1a_hex(fnv1a_64(body)), fnv1a_hex(checksum)));
+                    name, fnv1a_hex(sum), fnv1a_hex(checksum)));
 
-  ByteReader reader(body, name);
-  reader.get(contents.geompm_version);
-  reader.get(contents.model_hash);
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(checkpoint_header_bytes));
+  BodyCursor body(in, name, size);
+  contents.geompm_version = body.text();
+  contents.model_hash = body.number<std::uint64_t>();
   if (contents.model_hash != model_hash)
     throw InputError(fmt::format(
         "{}: the checkpoint was written for another model (the text of its model file hashed to "
         "{}, this model file's to {}): resume with the model file the run was started with, "
         "unchanged, or run again without --resume",
         name, fnv1a_hex(contents.model_hash), fnv1a_hex(model_hash)));
-  const auto count = reader.get<std::uint32_t>();
+  const auto count = body.number<std::uint32_t>();
   for (std::uint32_t k = 0; k < count; ++k) {
-    std::pair<std::string, std::string> section;
-    reader.get(section.first);
-    reader.get(section.second);
-    contents.sections.push_back(std::move(section));
+    std::string section = body.text();
+    const auto bytes = body.number<std::uint64_t>();
+    if (std::find(left_in_file.begin(), left_in_file.end(), section) != left_in_file.end()) {
+      contents.in_file[section] = {body.at(), bytes};
+      body.skip(bytes);
+    } else {
+      contents.sections.emplace_back(std::move(section), body.bytes(bytes));
+    }
   }
-  reader.expect_end();
+  if (body.at() != size)
+    throw InputError(
+        fmt::format("{}: {} bytes left over after reading it (damaged, or written by "
+                    "another layout of the same format version)",
+                    name, size - body.at()));
   return contents;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,19 +39,30 @@ void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t mode
                            const CheckpointWriteOptions& options = {});
 
 struct CheckpointContents {
+  /// Where a section left in the file lies in it: its bytes from `offset`, `length` of them.
+  struct Place {
+    std::uint64_t offset = 0, length = 0;
+  };
+
   std::string file;            // as given, for messages
   std::string geompm_version;  // of the geompm that wrote it
   std::uint64_t model_hash = 0;
-  CheckpointSections sections;
+  CheckpointSections sections;           // those read
+  std::map<std::string, Place> in_file;  // those left in the file
 
   /// A reader of the section `name`; throws InputError if the checkpoint has none.
   ByteReader section(const std::string& name) const;
+  /// Where the section `name` left in the file lies; throws InputError if the checkpoint has none.
+  Place place(const std::string& name) const;
 };
 
 /// Reads and checks a checkpoint: throws InputError naming the file and what is wrong when it is
 /// missing, truncated, not a checkpoint, of another format version, damaged (checksum) or written
-/// for a model whose text hashes otherwise than `model_hash`.
-CheckpointContents read_checkpoint_file(const std::filesystem::path& file,
-                                        std::uint64_t model_hash);
+/// for a model whose text hashes otherwise than `model_hash`. The sections named in
+/// `left_in_file` are not read, only found (`in_file`): a reader takes what it needs of them from
+/// the file (a distributed run's points, analysis/simulation_state.cpp). The file is read a slice
+/// at a time, never held whole.
+CheckpointContents read_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
+                                        const std::vector<std::string>& left_in_file = {});
 
 }  // namespace geompm

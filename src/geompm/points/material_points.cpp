@@ -128,6 +128,33 @@ void MaterialPoints::append(const MaterialPoints& more) {
       more);
 }
 
+MaterialPoints::SavedLayout MaterialPoints::saved_layout() {
+  SavedLayout layout;
+  MaterialPoints none;
+  for_each_field(none, [&](const auto& field) {
+    using T = typename std::decay_t<decltype(field)>::value_type;
+    if (static_cast<const void*>(&field) == static_cast<const void*>(&none.cell))
+      layout.cell_array = layout.value_bytes.size();
+    layout.value_bytes.push_back(archived_bytes<T>());
+  });
+  return layout;
+}
+
+void MaterialPoints::append_saved(std::size_t array, std::string_view bytes,
+                                  const std::vector<char>& keep, std::size_t first) {
+  std::size_t k = 0;
+  for_each_field(*this, [&](auto& field) {
+    if (k++ != array) return;
+    using T = typename std::decay_t<decltype(field)>::value_type;
+    ByteReader in(bytes, "saved points");
+    for (std::size_t i = first; in.remaining() > 0; ++i) {
+      T value{};
+      in.get(value);
+      if (keep[i]) field.push_back(value);
+    }
+  });
+}
+
 double MaterialPoints::bytes_per_point() const {
   if (id.empty()) return 0.0;
   double bytes = 0;

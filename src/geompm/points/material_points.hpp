@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "geompm/core/types.hpp"
@@ -76,6 +77,18 @@ struct MaterialPoints {
   void save(ByteWriter& out) const;
   /// Replaces every array by what save() wrote; throws InputError if the arrays' lengths differ.
   void load(ByteReader& in);
+
+  /// The arrays as save() writes them: each a count, then that many values of a fixed size.
+  struct SavedLayout {
+    std::vector<std::size_t> value_bytes;  // per array, in save()'s order
+    std::size_t cell_array = 0;            // which of them is `cell`
+  };
+  static SavedLayout saved_layout();
+  /// Appends to array `array` (save()'s order) the values of `bytes`, whole values as save()
+  /// wrote them, of points first, first + 1, ...: those whose `keep` flag is set. A reader that
+  /// keeps some points only fills every array so (points/saved_points.hpp).
+  void append_saved(std::size_t array, std::string_view bytes, const std::vector<char>& keep,
+                    std::size_t first);
 
   /// Bytes held per point by the arrays (capacity included), for docs/performance.md.
   double bytes_per_point() const;
