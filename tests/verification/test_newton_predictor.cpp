@@ -43,9 +43,9 @@ BothStarts run_both_starts(const std::string& example, const std::string& vtk,
     text = testing::with_numerics(text, "empty_cell_stiffness", empty_cells);
   return {testing::run_spec(read_model_from_string(with_newton_line(text, newton), name + ".yaml"),
                             name + "_zero"),
-          testing::run_spec(
-              read_model_from_string(with_newton_line(text, with_predictor(newton)), name + ".yaml"),
-              name + "_extrapolated")};
+          testing::run_spec(read_model_from_string(with_newton_line(text, with_predictor(newton)),
+                                                   name + ".yaml"),
+                            name + "_extrapolated")};
 }
 
 double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
