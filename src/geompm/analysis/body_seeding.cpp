@@ -116,6 +116,15 @@ void add_body_point(std::size_t b, const SeedPoint& s, Index c, Index id,
     model.points.velocity[p](d) = v0[d](s.position.x(), s.position.y(), s.position.z(), 0.0);
 }
 
+// A body's initial velocity, one expression of x, y, z per component.
+std::array<Expression, 3> initial_velocity(const spec::Body& body) {
+  std::array<Expression, 3> v0;
+  for (int d = 0; d < 3; ++d)
+    v0[d] = Expression(body.initial_velocity[d],
+                       fmt::format("{}.initial_velocity[{}]", body.source.describe(), d));
+  return v0;
+}
+
 }  // namespace
 
 std::vector<double> SeedCensus::points_in_cell() const {
@@ -125,20 +134,24 @@ std::vector<double> SeedCensus::points_in_cell() const {
   return count;
 }
 
-SeedCensus count_body_points(Model& model) {
+SeedCensus count_body_points(Model& model, bool add_points) {
   const spec::Model& spec = model.spec;
   const BodyRegions bodies(model);
   SeedCensus census;
   model.seeds_inside_structures.assign(spec.bodies.size(), 0);
+  Index next_id = 0;
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
     std::vector<std::uint8_t>& count = census.per_cell.emplace_back(model.mesh.num_cells(), 0);
+    const std::array<Expression, 3> v0 = initial_velocity(spec.bodies[b]);
     Index total = 0;
     bool fem_cells = false;  // the body holds FEM cells, seeded at their Gauss points
     for (Index c = 0; c < model.mesh.num_cells(); ++c) {
       if (!bodies.may_seed(b, c, fem_cells)) continue;
-      const std::size_t kept = bodies.kept(b, c, model.seeds_inside_structures[b]).size();
-      count[c] = static_cast<std::uint8_t>(kept);
-      total += static_cast<Index>(kept);
+      const std::vector<SeedPoint> seeds = bodies.kept(b, c, model.seeds_inside_structures[b]);
+      count[c] = static_cast<std::uint8_t>(seeds.size());
+      total += static_cast<Index>(seeds.size());
+      if (add_points)
+        for (const SeedPoint& s : seeds) add_body_point(b, s, c, next_id++, v0, model);
     }
     if (total == 0 && !fem_cells)
       throw InputError(spec.bodies[b].region.source,
@@ -155,11 +168,7 @@ void seed_own_cells(const SeedCensus& census, const std::vector<int>& cell_part,
   const BodyRegions bodies(model);
   Index next_id = 0, inside_structures = 0;
   for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
-    const spec::Body& body = spec.bodies[b];
-    std::array<Expression, 3> v0;
-    for (int d = 0; d < 3; ++d)
-      v0[d] = Expression(body.initial_velocity[d],
-                         fmt::format("{}.initial_velocity[{}]", body.source.describe(), d));
+    const std::array<Expression, 3> v0 = initial_velocity(spec.bodies[b]);
     for (Index c = 0; c < model.mesh.num_cells(); ++c) {
       const Index count = census.per_cell[b][c];
       if (count == 0) continue;

@@ -435,13 +435,16 @@ std::unique_ptr<Model> build_model_parts(const spec::Model& spec, const Communic
   }
   build_fem_region(spec, *model);
   // The points counted in every cell, the cells cut among the processes by them, and each process
-  // seeds its own (analysis/body_seeding.hpp).
+  // seeds its own (analysis/body_seeding.hpp); a serial run seeds as it counts.
   check_bodies_inside_mesh(spec, mesh);
-  const SeedCensus census = count_body_points(*model);
-  if (processes.distributed())
+  if (processes.distributed()) {
+    const SeedCensus census = count_body_points(*model);
     model->cell_part = partition_by_work(*model, census.points_in_cell(), processes.size());
-  on_own_points(processes,
-                [&] { seed_own_cells(census, model->cell_part, processes.rank(), *model); });
+    on_own_points(processes,
+                  [&] { seed_own_cells(census, model->cell_part, processes.rank(), *model); });
+  } else {
+    on_own_points(processes, [&] { count_body_points(*model, /*add_points=*/true); });
+  }
   add_point_sets(spec, *model, processes);
   check_boundaries(spec, mesh);
   for (std::size_t s = 0; s < spec.structures.size(); ++s)
