@@ -367,10 +367,11 @@ void Simulation::write_checkpoint() {
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
   if (phase_->motions.empty()) return;
-  // From every process's points (gathered on rank 0), and the verdict shared by all.
-  std::string unfollowed;
-  with_all_points([&] { unfollowed = unfollowed_motions(model_, *phase_); });
-  if (processes_.distributed()) unfollowed = processes_.all_gather(unfollowed).front();
+  // Each process sums its own driven points; the sums over the processes are the same bits on
+  // every process, and so is the verdict drawn from them.
+  std::vector<double> sums = motion_sums(model_, *phase_);
+  processes_.sum(sums);
+  const std::string unfollowed = unfollowed_motions(model_, *phase_, sums);
   if (unfollowed.empty()) return;
   stop(fmt::format(
       "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "
