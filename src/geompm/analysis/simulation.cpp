@@ -76,27 +76,6 @@ Simulation::Simulation(Model& model, const RunOptions& options)
 
 Simulation::~Simulation() = default;
 
-template <class Write>
-void Simulation::with_all_points(Write&& write) const {
-  if (!processes_.distributed()) {
-    write();
-    return;
-  }
-  MaterialPoints all = gather_points(model_.points, processes_);
-  // Process 0 writes; every process learns whether that went well (a full disk stops them all).
-  together(processes_, [&] {
-    if (!writes_files()) return;
-    std::swap(model_.points, all);
-    try {
-      write();
-    } catch (...) {
-      std::swap(model_.points, all);
-      throw;
-    }
-    std::swap(model_.points, all);
-  });
-}
-
 void Simulation::distribute_points(std::vector<int> cell_part) {
   if (!processes_.distributed()) return;
   model_.cell_part = cell_part;  // a resumed run's cut is made anew
@@ -357,12 +336,8 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   last_checkpoint_ = Clock::now();
 }
 
-// In the serial format, whatever the number of processes: every point and Gauss point on
-// process 0, which writes it.
-void Simulation::write_checkpoint() {
-  if (model_.fem) gather_fem_region(*model_.fem, processes_);
-  with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
-}
+// In the serial format, whatever the number of processes (save()).
+void Simulation::write_checkpoint() { save(checkpoint_file(options_.output_dir)); }
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
