@@ -15,6 +15,8 @@
 #   GEOMPM_BENCH_REPETITIONS  runs per case (default 3)
 #   GEOMPM_BENCH_STEPS        steps per run (default 2)
 #   GEOMPM_BENCH_SOLVER       numerics.linear_solver (default petsc_mumps)
+#   GEOMPM_BENCH_CHECKPOINT_EVERY  a checkpoint every N steps (--checkpoint-every; default 0: none,
+#                             as the block model's output says)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -24,6 +26,9 @@ cells="${GEOMPM_BENCH_MPI_CELLS:-500}"
 repetitions="${GEOMPM_BENCH_REPETITIONS:-3}"
 steps="${GEOMPM_BENCH_STEPS:-2}"
 solver="${GEOMPM_BENCH_SOLVER:-petsc_mumps}"
+checkpoint_every="${GEOMPM_BENCH_CHECKPOINT_EVERY:-0}"
+checkpoints=()
+((checkpoint_every > 0)) && checkpoints=(--checkpoint-every "$checkpoint_every")
 out="$root/bench/mpi_memory.md"
 
 source "$root/bench/block_model.sh"
@@ -34,7 +39,7 @@ peaks_once() {  # geompm processes file
   rm -rf "$dir" "$work"/rss.*
   mpirun --oversubscribe -np "$processes" bash -c \
     '/usr/bin/time -f %M -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$work/rss" \
-    "$geompm" run "$file" -o "$dir" --quiet >/dev/null 2>&1
+    "$geompm" run "$file" -o "$dir" --quiet "${checkpoints[@]}" >/dev/null 2>&1
   for ((r = 0; r < processes; ++r)); do echo $(($(tail -1 "$work/rss.$r") / 1024)); done
 }
 
@@ -67,7 +72,7 @@ for geompm in "${executables[@]}"; do
 done
 {
   echo
-  echo "Written by bench/mpi_memory.sh on $(date -u '+%Y-%m-%d %H:%M UTC'), geompm $(git -C "$root" rev-parse --short HEAD), 2D block of $cells cells per side ($((4 * cells * (cells - 1))) points), $steps steps, $solver, load average at start $load_before, at end $(cut -d' ' -f1-3 /proc/loadavg); medians of $repetitions runs."
+  echo "Written by bench/mpi_memory.sh on $(date -u '+%Y-%m-%d %H:%M UTC'), geompm $(git -C "$root" rev-parse --short HEAD), 2D block of $cells cells per side ($((4 * cells * (cells - 1))) points), $steps steps, $solver, $( ((checkpoint_every > 0)) && echo "a checkpoint every $checkpoint_every steps" || echo "no checkpoint"), load average at start $load_before, at end $(cut -d' ' -f1-3 /proc/loadavg); medians of $repetitions runs."
   echo
   cat "$work/table"
 } >>"$out"

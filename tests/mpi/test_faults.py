@@ -1,6 +1,7 @@
 """A distributed run that meets an error ends every process with the serial run's exit code and
 one message, never a hang (core/agreement.hpp): an output directory process 0 cannot use, a
-history file on a full disk (written by process 0 only), a fault in the step's work on process 1
+history file on a full disk (written by process 0 only), a checkpoint on a full disk (written by
+process 0 as the others stream their points to it), a fault in the step's work on process 1
 only (shared in the step's reduction: the run stops as a serial run stops, summary.json written),
 a fault on process 1 outside any shared point (the last resort: every process is stopped), and a
 model error met by every process while reading the model (said once).
@@ -23,6 +24,25 @@ TIMEOUT = 120
 # The elastic column under its weight (26 cells cut between the processes), with its history.
 with open(os.path.join(ROOT, "examples", "column", "column.yaml")) as f:
     COLUMN = f.read()
+
+# An elastic block of 40 x 40 cells, 4 points a cell, one step under gravity.
+BLOCK = """title: block
+analysis: {kinematics: plane_strain}
+mesh: {generate: {cell: quad4, origin: [0, 0], x: {length: 10, cells: 40}, y: {length: 10, cells: 40}}}
+materials: {soil: {model: linear_elastic, E: 1.0e5, nu: 0.3, density: 2}}
+bodies: {block: {material: soil, region: {box: {min: [0, 0], max: [10, 10]}}, points_per_cell: 4}}
+phases:
+  - name: gravity
+    duration: 1
+    time_step: 1
+    dynamics: quasi_static
+    gravity: {acceleration: [0, -10]}
+    fixities:
+      - {boundary: left, fix: normal}
+      - {boundary: right, fix: normal}
+      - {boundary: bottom, fix: all}
+output: {vtk: {every: 0}}
+"""
 
 
 class Faults(unittest.TestCase):
@@ -64,6 +84,28 @@ class Faults(unittest.TestCase):
         self.assertEqual(done.returncode, 3, done.stderr)
         self.assert_said_once(done, "No space left on device")
         self.assertIn("history.csv", done.stderr)
+
+    def test_checkpoint_on_a_full_disk(self):
+        # A block of 6400 points (a checkpoint of 3.3 MB) under a file size limit of 1 MiB (SIGXFSZ
+        # ignored: the write fails with EFBIG as on a full disk): process 0's write fails in the
+        # middle of the points section, which the other processes are streaming to it
+        # (points/streamed_points.hpp); they finish the section, then all learn the failure and
+        # stop with the serial run's exit code, said once, with no checkpoint left.
+        model = os.path.join(self.dir, "block.yaml")
+        with open(model, "w") as f:
+            f.write(BLOCK)
+        output = os.path.join(self.dir, "out")
+        command = [MPIRUN, "--oversubscribe", "-np", "3", "bash", "-c",
+                   "trap '' XFSZ; ulimit -f 1024; exec \"$@\"", "bash", BINARY, "run", model,
+                   "-o", output, "--quiet", "--checkpoint-every", "1"]
+        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT,
+                              env=dict(os.environ, OMP_NUM_THREADS="1"), cwd=self.dir)
+        self.assertEqual(done.returncode, 3, done.stderr)
+        self.assert_said_once(done, "run stopped: cannot write the checkpoint")
+        self.assertIn("File too large", done.stderr)
+        self.assertFalse(os.path.exists(os.path.join(output, "checkpoint.bin")))
+        with open(os.path.join(output, "summary.json")) as f:
+            self.assertEqual(json.load(f)["status"], "stopped")
 
     def test_fault_in_the_step_on_process_1(self):
         output = os.path.join(self.dir, "out")

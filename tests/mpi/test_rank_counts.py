@@ -5,8 +5,9 @@ and under mpirun on 2 and 3 processes (MUMPS on the distributed matrix); every h
 agree with the serial one to `TOLERANCE` of the column's largest magnitude, which is what the
 Newton tolerances of these examples (1e-9 and tighter on the residual) leave of the difference in
 round-off between the two direct solvers and the order of the sums. A checkpoint written by a run
-on 2 processes, killed half-way through its next checkpoint, resumes on 1 and on 3 processes to
-the same history (also of a model with an FEM region).
+on 2 processes, killed half-way through its next checkpoint, resumes on 1, 2 and 3 processes to
+the same history (on 1 and 3 for a model with an FEM region), and the checkpoints of 2 and 3
+processes hold the serial one's sections and points.
 
 Environment: GEOMPM_BINARY (the geompm executable), GEOMPM_MPIRUN (mpirun).
 """
@@ -15,6 +16,7 @@ import shutil
 import tempfile
 import unittest
 
+import checkpoint_file
 from runs import ROOT, history, run
 
 TOLERANCE = 1e-6
@@ -177,15 +179,51 @@ class RankCounts(unittest.TestCase):
                 self.assertEqual(done.returncode, 0, f"{model} with {solver}: {done.stderr}")
                 self.assert_same_history(serial, output, f"{model} with {solver} on 2 processes")
 
-    def test_checkpoint_of_two_processes_resumes_on_one_and_three(self):
-        self.assert_resumes_on_one_and_three("earth_pressure/rankine_active.yaml")
+    def test_checkpoint_of_two_processes_resumes_on_one_two_and_three(self):
+        self.assert_resumes_on_one_and_three("earth_pressure/rankine_active.yaml", (1, 2, 3))
 
-    def assert_resumes_on_one_and_three(self, model):
-        """A checkpoint of `model` on 2 processes resumes on 1 and 3 to the run's history."""
+    def test_checkpoints_of_two_and_three_processes_are_laid_out_as_the_serial_one(self):
+        # Process 0 writes the file while every process's points reach it a window of ids at a
+        # time (points/streamed_points.hpp): the sections of the serial file, in its order, the
+        # same run state, and the same points (by id; the distributed files in id order) with the
+        # same integers and the serial values to the round-off of the solvers (the bytes of the
+        # same points are the serial ones exactly: tests/mpi/test_streamed_checkpoint.cpp).
+        # The oedometer: its serial store leaves id order (points cross cells), and it has a
+        # prescribed motion.
+        model = "oedometer/oedometer.yaml"
+        files = {}
+        for processes in (1, 2, 3):
+            output = os.path.join(self.dir, f"np{processes}")
+            done = run(model, output, processes, "--checkpoint-every", "1000")
+            self.assertEqual(done.returncode, 0, done.stderr)
+            files[processes] = checkpoint_file.sections(os.path.join(output, "checkpoint.bin"))
+        serial = files[1]
+        serial_points = checkpoint_file.point_arrays(serial["points"])
+        ids = serial_points["id"]
+        self.assertNotEqual(ids, sorted(ids), "the serial store should have left id order")
+        by_id = sorted(range(len(ids)), key=lambda k: ids[k])
+        for processes in (2, 3):
+            label = f"{processes} processes"
+            self.assertEqual(list(files[processes]), list(serial), label)
+            self.assertEqual(files[processes]["run"], serial["run"], label)
+            self.assertEqual(len(files[processes]["points"]), len(serial["points"]), label)
+            points = checkpoint_file.point_arrays(files[processes]["points"])
+            for name, values in points.items():
+                expected = [serial_points[name][k] for k in by_id]
+                if name in ("id", "body", "material", "sets", "cell"):
+                    self.assertEqual(values, expected, f"{label}: {name}")
+                    continue
+                scale = max(max(abs(x) for x in v) for v in expected) or 1.0
+                worst = max(max(abs(x - y) for x, y in zip(a, b)) for a, b in zip(values, expected))
+                self.assertLessEqual(worst, TOLERANCE * scale, f"{label}: {name}")
+
+    def assert_resumes_on_one_and_three(self, model, counts=(1, 3)):
+        """A checkpoint of `model` on 2 processes resumes on each of `counts` processes to the
+        run's history."""
         whole = os.path.join(self.dir, "whole")
         done = run(model, whole, 2)
         self.assertEqual(done.returncode, 0, done.stderr)
-        for processes in (1, 3):
+        for processes in counts:
             output = os.path.join(self.dir, f"resumed{processes}")
             # Killed half-way through its third checkpoint: it resumes from the second.
             killed = run(model, output, 2, "--checkpoint-every", "5",
@@ -197,10 +235,25 @@ class RankCounts(unittest.TestCase):
 
     def test_fem_region_checkpoint_resumes_on_one_and_three(self):
         # The coupled pile's checkpoint holds its Gauss points' states, which each process keeps
-        # for its own cells only: gathered on process 0 before it writes (without, the run resumed
+        # for its own cells only: streamed to process 0 as it writes (without, the run resumed
         # on 3 processes from a checkpoint of 2 took its stale Gauss points: the head force 15 %
         # off).
         self.assert_resumes_on_one_and_three("coupling/pile_coupled.yaml")
+
+    def test_a_motion_the_points_cannot_follow_stops_the_run(self):
+        # The oedometer's block squeezed by twice its height (as the serial test,
+        # tests/examples/test_run_policies.cpp): the driven points' mean displacement, summed over
+        # the processes (analysis/motion_check.hpp), falls far short, and every process stops
+        # with the serial run's verdict, said once. The example itself (EXAMPLES) passes it.
+        model = self.variant("oedometer/oedometer.yaml", lambda text: text.replace(
+            'displacement: [~, "-0.1*t"]', 'displacement: [~, "-2*t"]'))
+        for processes in (1, 2, 3):
+            done = run(model, os.path.join(self.dir, f"squeezed{processes}"), processes)
+            self.assertEqual(done.returncode, 3, done.stderr)
+            self.assertEqual(done.stderr.count("the points did not follow the displacement "
+                                               "prescribed to them"), 1, done.stderr)
+            self.assertIn("phases[0].prescribed_motion[0] (top): the point set moved", done.stderr)
+            self.assertIn("of the -2 prescribed", done.stderr)
 
     def test_a_feature_not_distributed_is_refused(self):
         model = self.variant("column/column.yaml", lambda text: text.replace(

@@ -3,11 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "geompm/core/error.hpp"
 #include "geompm/mesh/partition.hpp"
-#include "geompm/points/point_exchange.hpp"
 
 namespace geompm {
 
@@ -41,19 +39,6 @@ std::vector<int> partition_by_points(const Model& model, int processes) {
   std::vector<double> points_in_cell(model.mesh.num_cells(), 0.0);
   for (Index c : model.points.cell) points_in_cell[c] += 1.0;
   return partition_by_work(model, std::move(points_in_cell), processes);
-}
-
-void gather_fem_region(FemRegion& region, const Communicator& processes) {
-  if (!processes.distributed()) return;
-  MaterialPoints& gauss = region.gauss_points();
-  // The Gauss points' ids are their places in the store (0, 1, ...: FemRegion), by which
-  // gather_points orders them.
-  MaterialPoints all = gather_points(gauss.subset(region.own_gauss_points()), processes);
-  if (processes.rank() != 0) return;
-  if (all.size() != gauss.size())
-    throw std::logic_error(
-        fmt::format("gather_fem_region: {} Gauss points gathered of {}", all.size(), gauss.size()));
-  gauss = std::move(all);
 }
 
 }  // namespace geompm

@@ -27,8 +27,4 @@ std::vector<int> partition_by_work(const Model& model, std::vector<double> point
 /// read from a checkpoint).
 std::vector<int> partition_by_points(const Model& model, int processes);
 
-/// The FEM region's Gauss points of every process (each keeps those of its own cells up to
-/// date) into process 0's store, for a checkpoint. Collective.
-void gather_fem_region(FemRegion& region, const Communicator& processes);
-
 }  // namespace geompm

@@ -29,15 +29,17 @@
 namespace geompm {
 
 void Model::save_state(ByteWriter& out) const {
+  save_state_before_gauss_points(out);
+  if (fem) fem->gauss_points().save(out);  // last: its load() expects the end
+}
+
+void Model::save_state_before_gauss_points(ByteWriter& out) const {
   out.put(grid_displacement);
   out.put(lost_mass);
   out.put(lost_points);
-  // The FEM region's Gauss points and the moved mesh (docs/theory.md §19), only with one, so that
-  // a model without keeps its checkpoint's layout.
-  if (fem) {
-    out.put(mesh.nodes);
-    fem->gauss_points().save(out);  // last: its load() expects the end
-  }
+  // The moved mesh and (save_state) the FEM region's Gauss points (docs/theory.md §19), only with
+  // one, so that a model without keeps its checkpoint's layout.
+  if (fem) out.put(mesh.nodes);
 }
 
 void Model::load_state(ByteReader& in) {

@@ -57,6 +57,9 @@ struct Model {
   /// What a run changes besides the points (displacements so far, lost points), for a
   /// checkpoint; the points are saved by MaterialPoints::save.
   void save_state(ByteWriter& out) const;
+  /// What save_state writes before the FEM region's Gauss points, which come last (saved by
+  /// MaterialPoints::save; a distributed run streams them: analysis/simulation_state.cpp).
+  void save_state_before_gauss_points(ByteWriter& out) const;
   void load_state(ByteReader& in);
   std::vector<const Material*> material_pointers() const;
   int point_set_bit(const std::string& name) const;  // -1 if unknown

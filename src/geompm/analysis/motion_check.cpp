@@ -23,24 +23,33 @@ double typical_cell_size(const Mesh& mesh) {
 
 }  // namespace
 
-std::string unfollowed_motions(const Model& model, const PhaseContext& phase) {
+std::vector<double> motion_sums(const Model& model, const PhaseContext& phase) {
   const MaterialPoints& points = model.points;
+  std::vector<double> sums(motion_sum_values * phase.motions.size(), 0.0);
+  for (std::size_t m = 0; m < phase.motions.size(); ++m) {
+    double* sum = &sums[motion_sum_values * m];
+    // Mass-weighted, as the displacement history of a point set (volume-weighted if weightless).
+    for (Index p = 0; p < points.size(); ++p)
+      if (points.sets[p] >> phase.motions[m].set & 1u) {
+        const double w = points.mass[p] > 0 ? points.mass[p] : points.volume[p];
+        sum[0] += w;
+        for (int i = 0; i < 3; ++i) sum[1 + i] += w * points.phase_displacement[p](i);
+      }
+  }
+  return sums;
+}
+
+std::string unfollowed_motions(const Model& model, const PhaseContext& phase,
+                               const std::vector<double>& sums) {
   const int dim = model.mesh.dim();
   const double floor = motion_shortfall_floor * typical_cell_size(model.mesh);
   std::string found;
   for (std::size_t m = 0; m < phase.motions.size(); ++m) {
     const PhaseContext::Motion& motion = phase.motions[m];
-    // Mass-weighted, as the displacement history of a point set (volume-weighted if weightless).
-    Vec3 moved = Vec3::Zero();
-    double weight = 0.0;
-    for (Index p = 0; p < points.size(); ++p)
-      if (points.sets[p] >> motion.set & 1u) {
-        const double w = points.mass[p] > 0 ? points.mass[p] : points.volume[p];
-        moved += w * points.phase_displacement[p];
-        weight += w;
-      }
+    const double* sum = &sums.at(motion_sum_values * m);
+    const double weight = sum[0];
     if (!(weight > 0)) continue;  // every driven point left the mesh: reported as lost points
-    moved /= weight;
+    const Vec3 moved = Vec3(sum[1], sum[2], sum[3]) / weight;
     for (int i = 0; i < dim; ++i) {
       if (!motion.components[i]) continue;
       const double prescribed = motion.done(i), shortfall = std::abs(moved(i) - prescribed);

@@ -76,27 +76,6 @@ Simulation::Simulation(Model& model, const RunOptions& options)
 
 Simulation::~Simulation() = default;
 
-template <class Write>
-void Simulation::with_all_points(Write&& write) const {
-  if (!processes_.distributed()) {
-    write();
-    return;
-  }
-  MaterialPoints all = gather_points(model_.points, processes_);
-  // Process 0 writes; every process learns whether that went well (a full disk stops them all).
-  together(processes_, [&] {
-    if (!writes_files()) return;
-    std::swap(model_.points, all);
-    try {
-      write();
-    } catch (...) {
-      std::swap(model_.points, all);
-      throw;
-    }
-    std::swap(model_.points, all);
-  });
-}
-
 void Simulation::distribute_points(std::vector<int> cell_part) {
   if (!processes_.distributed()) return;
   model_.cell_part = cell_part;  // a resumed run's cut is made anew
@@ -357,20 +336,17 @@ void Simulation::checkpoint_if_due(bool phase_done) {
   last_checkpoint_ = Clock::now();
 }
 
-// In the serial format, whatever the number of processes: every point and Gauss point on
-// process 0, which writes it.
-void Simulation::write_checkpoint() {
-  if (model_.fem) gather_fem_region(*model_.fem, processes_);
-  with_all_points([&] { save(checkpoint_file(options_.output_dir)); });
-}
+// In the serial format, whatever the number of processes (save()).
+void Simulation::write_checkpoint() { save(checkpoint_file(options_.output_dir)); }
 
 // After the phase's last step (written, and checkpointed), so that its results are kept.
 void Simulation::check_motions_followed() {
   if (phase_->motions.empty()) return;
-  // From every process's points (gathered on rank 0), and the verdict shared by all.
-  std::string unfollowed;
-  with_all_points([&] { unfollowed = unfollowed_motions(model_, *phase_); });
-  if (processes_.distributed()) unfollowed = processes_.all_gather(unfollowed).front();
+  // Each process sums its own driven points; the sums over the processes are the same bits on
+  // every process, and so is the verdict drawn from them.
+  std::vector<double> sums = motion_sums(model_, *phase_);
+  processes_.sum(sums);
+  const std::string unfollowed = unfollowed_motions(model_, *phase_, sums);
   if (unfollowed.empty()) return;
   stop(fmt::format(
       "phase '{}': the points did not follow the displacement prescribed to them:{}\nThe body "

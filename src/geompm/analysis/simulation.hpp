@@ -44,7 +44,9 @@ class Simulation {
   /// Ends the run: plots, summary.json. `reason` is empty for a run that finished.
   void finish(const std::string& stop_reason = "");
 
-  /// Everything the run needs to go on, to `file` (atomically) / from it.
+  /// Everything the run needs to go on, to `file` (atomically) / from it. save() is collective
+  /// in a distributed run (process 0 writes the file, every process's points pass through it a
+  /// slice at a time); load() reads this process's own points.
   void save(const std::filesystem::path& file) const;
   void load(const std::filesystem::path& file);
 
@@ -78,10 +80,6 @@ class Simulation {
   /// A stopped run: the points' and structures' ParaView files of the last converged step, if
   /// that step did not write them (collective).
   void write_last_state();
-  /// Runs `write` on process 0 with every process's points in the model (gathered there, then
-  /// given back): the output and checkpoints are written as a serial run writes them. Collective.
-  template <class Write>
-  void with_all_points(Write&& write) const;
   /// Whether this process writes files (process 0).
   bool writes_files() const { return processes_.rank() == 0; }
 

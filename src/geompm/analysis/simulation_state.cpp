@@ -3,22 +3,87 @@
 // read every byte, so a layout that drifts from its writer is caught, not misread.
 #include <fmt/format.h>
 
+#include <exception>
+#include <functional>
+#include <optional>
+
 #include "geompm/analysis/distribution.hpp"
 #include "geompm/analysis/simulation.hpp"
+#include "geompm/core/agreement.hpp"
 #include "geompm/core/error.hpp"
 #include "geompm/io/checkpoint_file.hpp"
 #include "geompm/points/saved_points.hpp"
+#include "geompm/points/streamed_points.hpp"
 
 namespace geompm {
 
+namespace {
+
+// Process 0's checkpoint file while every process takes part in writing it: an error of process
+// 0's writing (a full disk) is kept, not thrown, until the collective steps are over, then every
+// process learns it and throws it (together), as a serial run throws it at once.
+class ProcessZeroFile {
+ public:
+  explicit ProcessZeroFile(const Communicator& processes) : processes_(processes) {}
+
+  /// Runs `write` with the file on process 0, unless an earlier write failed.
+  void write(const std::function<void(CheckpointWriter&)>& write) {
+    if (processes_.rank() != 0 || failure_) return;
+    try {
+      write(*file_);
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+  }
+  void open(const std::filesystem::path& file, std::uint64_t model_hash, std::uint32_t sections,
+            CheckpointWriteOptions options) {
+    if (processes_.rank() != 0) return;
+    try {
+      file_.emplace(file, model_hash, sections, options);
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+  }
+  /// A whole section, made by `fill` on process 0.
+  void section(const char* name, const std::function<void(ByteWriter&)>& fill) {
+    write([&](CheckpointWriter& file) {
+      ByteWriter out;
+      fill(out);
+      file.section(name, out.bytes());
+    });
+  }
+  /// The bytes of process 0's sink of stream_saved_points.
+  ByteSink sink() {
+    return [this](std::string_view bytes) { write([&](CheckpointWriter& f) { f.add(bytes); }); };
+  }
+  /// Commits the file; every process throws the error process 0 met, if it met one.
+  /// Collective.
+  void commit() {
+    write([](CheckpointWriter& file) { file.commit(); });
+    together(processes_, [&] {
+      if (failure_) std::rethrow_exception(failure_);
+    });
+  }
+
+ private:
+  const Communicator& processes_;
+  std::optional<CheckpointWriter> file_;
+  std::exception_ptr failure_;
+};
+
+constexpr std::uint32_t checkpoint_sections = 8;
+
+}  // namespace
+
+// Collective. Process 0 writes the file; the points (and the FEM region's Gauss points) of every
+// process reach it a slice at a time, in id order (points/streamed_points.hpp): in the serial
+// run's layout, and no process holds a copy of every point.
 void Simulation::save(const std::filesystem::path& file) const {
-  CheckpointSections sections;
-  const auto section = [&sections](const char* name, auto&& write) {
-    ByteWriter out;
-    write(out);
-    sections.emplace_back(name, out.take());
-  };
-  section("run", [&](ByteWriter& out) {
+  CheckpointWriteOptions write_options;
+  write_options.kill_half_way = kill_in_checkpoint_ > 0 && checkpoints_ + 1 == kill_in_checkpoint_;
+  ProcessZeroFile out(processes_);
+  out.open(file, options_.model_hash, checkpoint_sections, write_options);
+  out.section("run", [&](ByteWriter& out) {
     out.put(static_cast<std::uint64_t>(phase_index_));
     out.put(model_.spec.phases[phase_index_].name);
     out.put(time_);
@@ -27,15 +92,29 @@ void Simulation::save(const std::filesystem::path& file) const {
     out.put(control_->state().time);
     out.put(control_->state().dt);
   });
-  section("points", [&](ByteWriter& out) { model_.points.save(out); });
-  section("model", [&](ByteWriter& out) { model_.save_state(out); });
-  section("phase", [&](ByteWriter& out) { phase_->save(out); });
-  section("step_solver", [&](ByteWriter& out) {
+  const Index points = processes_.sum(model_.points.size());
+  out.write([&](CheckpointWriter& f) { f.begin_section("points", saved_points_bytes(points)); });
+  stream_saved_points(model_.points, processes_, out.sink());
+  // Model::save_state's bytes: the Gauss points, last, streamed as the points are.
+  ByteWriter model_state;
+  if (writes_files()) model_.save_state_before_gauss_points(model_state);
+  const std::vector<Index> own_gauss =
+      model_.fem ? model_.fem->own_gauss_points() : std::vector<Index>();
+  const Index gauss_points = model_.fem ? processes_.sum(static_cast<Index>(own_gauss.size())) : 0;
+  out.write([&](CheckpointWriter& f) {
+    f.begin_section(
+        "model", model_state.bytes().size() + (model_.fem ? saved_points_bytes(gauss_points) : 0));
+    f.add(model_state.bytes());
+  });
+  if (model_.fem)
+    stream_saved_points(model_.fem->gauss_points(), own_gauss, processes_, out.sink());
+  out.section("phase", [&](ByteWriter& out) { phase_->save(out); });
+  out.section("step_solver", [&](ByteWriter& out) {
     out.put(stepper_.last_rate());
     out.put(stepper_.pressure().last());
     out.put(stepper_.field_rate());
   });
-  section("summary", [&](ByteWriter& out) {
+  out.section("summary", [&](ByteWriter& out) {
     // The wall times so far, this process's included.
     RunSummary counted = summary_;
     const auto now = Clock::now();
@@ -44,8 +123,8 @@ void Simulation::save(const std::filesystem::path& file) const {
         phase_wall_before_ + std::chrono::duration<double>(now - phase_started_).count();
     counted.save(out);
   });
-  section("output", [&](ByteWriter& out) { output_->save(out); });
-  section("structures", [&](ByteWriter& out) {
+  out.section("output", [&](ByteWriter& out) { output_->save(out); });
+  out.section("structures", [&](ByteWriter& out) {
     out.put(static_cast<std::uint64_t>(model_.structures.size()));
     for (std::size_t k = 0; k < model_.structures.size(); ++k) {
       out.put(model_.structures[k]->name());
@@ -53,10 +132,7 @@ void Simulation::save(const std::filesystem::path& file) const {
       model_.contacts[k].save(out);  // its contact with the soil
     }
   });
-
-  CheckpointWriteOptions write_options;
-  write_options.kill_half_way = kill_in_checkpoint_ > 0 && checkpoints_ + 1 == kill_in_checkpoint_;
-  write_checkpoint_file(file, options_.model_hash, sections, write_options);
+  out.commit();
   ++checkpoints_;
 }
 

@@ -1,7 +1,7 @@
 // The processes of a distributed run as the engine sees them (docs/architecture.md, "Distributed
 // runs"): who this process is, and the few collective operations the step needs - sums over the
-// grid's shared quantities, the exchange of points between processes, the gathering of points
-// for the histories and checkpoints. The interface lives in core so that every room may take one
+// grid's shared quantities, the exchange of points between processes, the points passed to
+// process 0 for a checkpoint. The interface lives in core so that every room may take one
 // without knowing MPI; the MPI implementation is the solver room's (solver/petsc_communicator.hpp),
 // which links MPI through PETSc. A serial run uses serial_communicator(): one process, every
 // operation the identity, no MPI start-up.

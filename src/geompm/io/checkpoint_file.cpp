@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include "geompm/core/error.hpp"
 #include "geompm/core/fnv1a.hpp"
@@ -17,18 +18,6 @@
 namespace geompm {
 
 namespace {
-
-// Writes all of `bytes` to the open file `fd`.
-bool write_all(int fd, const char* bytes, std::size_t size) {
-  while (size > 0) {
-    const ssize_t written = ::write(fd, bytes, size);
-    if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) return false;
-    bytes += written;
-    size -= static_cast<std::size_t>(written);
-  }
-  return true;
-}
 
 [[noreturn]] void fail_write(const std::filesystem::path& file, const std::string& what) {
   throw RunError(fmt::format("cannot write the checkpoint {}: {} ({})", file.string(), what,
@@ -43,17 +32,8 @@ void sync_directory(const std::filesystem::path& directory) {
   ::close(fd);
 }
 
-std::string body_of(std::uint64_t model_hash, const CheckpointSections& sections) {
-  ByteWriter body;
-  body.put(std::string(GEOMPM_VERSION));
-  body.put(model_hash);
-  body.put(static_cast<std::uint32_t>(sections.size()));
-  for (const auto& [name, data] : sections) {
-    body.put(name);
-    body.put(data);
-  }
-  return body.take();
-}
+// Bytes the writer gathers before it writes them to the file.
+constexpr std::size_t write_buffer_bytes = std::size_t{1} << 20;
 
 }  // namespace
 
@@ -61,40 +41,114 @@ std::filesystem::path checkpoint_temporary(const std::filesystem::path& file) {
   return std::filesystem::path(file.string() + ".tmp");
 }
 
-void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
-                           const CheckpointSections& sections,
-                           const CheckpointWriteOptions& options) {
-  const std::string body = body_of(model_hash, sections);
+CheckpointWriter::CheckpointWriter(std::filesystem::path file, std::uint64_t model_hash,
+                                   std::uint32_t sections, CheckpointWriteOptions options)
+    : file_(std::move(file)),
+      temporary_(checkpoint_temporary(file_)),
+      options_(options),
+      checksum_(fnv1a_offset_basis),
+      sections_left_(sections) {
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) fail_write(temporary_, "cannot create the file");
+  // The header's place: it is written once the body's length and checksum are known.
+  buffer_.reserve(write_buffer_bytes);
+  buffer_.assign(checkpoint_header_bytes, '\0');
+  ByteWriter head;
+  head.put(std::string(GEOMPM_VERSION));
+  head.put(model_hash);
+  head.put(sections);
+  body(head.bytes());
+}
+
+CheckpointWriter::~CheckpointWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void CheckpointWriter::section(const std::string& name, std::string_view bytes) {
+  begin_section(name, bytes.size());
+  add(bytes);
+}
+
+void CheckpointWriter::begin_section(const std::string& name, std::uint64_t length) {
+  if (section_left_ != 0 || sections_left_ == 0)
+    throw std::logic_error(fmt::format("checkpoint section '{}' begun out of turn", name));
+  --sections_left_;
+  ByteWriter head;
+  head.put(name);
+  head.put(length);
+  body(head.bytes());
+  section_left_ = length;
+}
+
+void CheckpointWriter::add(std::string_view bytes) {
+  if (bytes.size() > section_left_)
+    throw std::logic_error("a checkpoint section given more bytes than it announced");
+  section_left_ -= bytes.size();
+  body(bytes);
+}
+
+void CheckpointWriter::body(std::string_view bytes) {
+  checksum_ = fnv1a_64(bytes, checksum_);
+  length_ += bytes.size();
+  if (buffer_.size() + bytes.size() > write_buffer_bytes) flush();
+  if (bytes.size() >= write_buffer_bytes)
+    write_at(~std::uint64_t{0}, bytes);
+  else
+    buffer_.append(bytes);
+}
+
+void CheckpointWriter::flush() {
+  write_at(~std::uint64_t{0}, buffer_);
+  buffer_.clear();
+}
+
+// At `offset`, or (~0) where the file is.
+void CheckpointWriter::write_at(std::uint64_t offset, std::string_view bytes) {
+  const char* data = bytes.data();
+  for (std::size_t left = bytes.size(); left > 0;) {
+    const ssize_t written =
+        offset == ~std::uint64_t{0}
+            ? ::write(fd_, data, left)
+            : ::pwrite(fd_, data, left, static_cast<off_t>(offset + (data - bytes.data())));
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) fail_write(temporary_, "write failed");
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+}
+
+void CheckpointWriter::commit() {
+  if (section_left_ != 0 || sections_left_ != 0)
+    throw std::logic_error("a checkpoint committed before its sections were all written");
+  flush();
   ByteWriter header;
   for (const char c : checkpoint_magic) header.put(c);
   header.put(checkpoint_format_version);
-  header.put(static_cast<std::uint64_t>(body.size()));
-  header.put(fnv1a_64(body));
-
-  const std::filesystem::path temporary = checkpoint_temporary(file);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail_write(temporary, "cannot create the file");
-  if (options.kill_half_way) {
-    write_all(fd, header.bytes().data(), header.bytes().size());
-    write_all(fd, body.data(), body.size() / 2);
-    ::fsync(fd);
+  header.put(length_);
+  header.put(checksum_);
+  write_at(0, header.bytes());
+  if (options_.kill_half_way) {
+    // What a crash half-way through the body would leave.
+    if (::ftruncate(fd_, static_cast<off_t>(checkpoint_header_bytes + length_ / 2)) == 0)
+      ::fsync(fd_);
     std::raise(SIGKILL);
-  }
-  // Header and body apart: a large model's state is not copied once more to join them.
-  if (!write_all(fd, header.bytes().data(), header.bytes().size()) ||
-      !write_all(fd, body.data(), body.size())) {
-    ::close(fd);
-    fail_write(temporary, "write failed");
   }
   // Flushed to the disk before the rename: after a crash the name checkpoint.bin never points
   // at data that did not reach it.
-  if (::fsync(fd) != 0) {
-    ::close(fd);
-    fail_write(temporary, "fsync failed");
-  }
-  if (::close(fd) != 0) fail_write(temporary, "close failed");
-  if (::rename(temporary.c_str(), file.c_str()) != 0) fail_write(file, "rename failed");
-  sync_directory(file.parent_path());
+  if (::fsync(fd_) != 0) fail_write(temporary_, "fsync failed");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail_write(temporary_, "close failed");
+  if (::rename(temporary_.c_str(), file_.c_str()) != 0) fail_write(file_, "rename failed");
+  sync_directory(file_.parent_path());
+}
+
+void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
+                           const CheckpointSections& sections,
+                           const CheckpointWriteOptions& options) {
+  CheckpointWriter writer(file, model_hash, static_cast<std::uint32_t>(sections.size()), options);
+  for (const auto& [name, data] : sections) writer.section(name, data);
+  writer.commit();
 }
 
 ByteReader CheckpointContents::section(const std::string& name) const {

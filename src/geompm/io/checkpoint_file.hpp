@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -33,7 +34,45 @@ struct CheckpointWriteOptions {
 /// The temporary file a checkpoint is written to before the rename: `file` + ".tmp".
 std::filesystem::path checkpoint_temporary(const std::filesystem::path& file);
 
-/// Writes the checkpoint atomically. Throws RunError if the file cannot be written (a full disk).
+/// A checkpoint written as it is made: the body's bytes are passed in order, a large section in
+/// pieces, so that the writer never holds the whole body (a distributed run's points reach
+/// process 0 a slice at a time: points/streamed_points.hpp). Atomic: the body goes to the
+/// temporary file, the header (the body's length and checksum, known at the end) is written
+/// last, the file is flushed to the disk and renamed over `file` by commit(). Each write that
+/// fails (a full disk) throws RunError; the temporary file is left then, as after a crash.
+class CheckpointWriter {
+ public:
+  /// Creates the temporary file for a body of `sections` sections.
+  CheckpointWriter(std::filesystem::path file, std::uint64_t model_hash, std::uint32_t sections,
+                   CheckpointWriteOptions options = {});
+  ~CheckpointWriter();
+  CheckpointWriter(const CheckpointWriter&) = delete;
+  CheckpointWriter& operator=(const CheckpointWriter&) = delete;
+
+  /// A whole section.
+  void section(const std::string& name, std::string_view bytes);
+  /// A section of `length` bytes, passed by add() in pieces (in order).
+  void begin_section(const std::string& name, std::uint64_t length);
+  void add(std::string_view bytes);
+  /// Once every section is written: the header, the flush to disk and the rename.
+  void commit();
+
+ private:
+  void body(std::string_view bytes);  // buffered, hashed
+  void flush();
+  void write_at(std::uint64_t offset, std::string_view bytes);
+
+  std::filesystem::path file_, temporary_;
+  CheckpointWriteOptions options_;
+  int fd_ = -1;
+  std::string buffer_;
+  std::uint64_t length_ = 0, checksum_;
+  std::uint32_t sections_left_;
+  std::uint64_t section_left_ = 0;  // bytes the section begun still expects
+};
+
+/// Writes the checkpoint atomically (CheckpointWriter). Throws RunError if the file cannot be
+/// written (a full disk).
 void write_checkpoint_file(const std::filesystem::path& file, std::uint64_t model_hash,
                            const CheckpointSections& sections,
                            const CheckpointWriteOptions& options = {});

@@ -155,6 +155,15 @@ void MaterialPoints::append_saved(std::size_t array, std::string_view bytes,
   });
 }
 
+void MaterialPoints::put_saved(std::size_t array, const Index* which, std::size_t count,
+                               ByteWriter& out) const {
+  std::size_t k = 0;
+  for_each_field(const_cast<MaterialPoints&>(*this), [&](const auto& field) {
+    if (k++ != array) return;
+    for (std::size_t i = 0; i < count; ++i) out.put(field[which[i]]);
+  });
+}
+
 double MaterialPoints::bytes_per_point() const {
   if (id.empty()) return 0.0;
   double bytes = 0;

@@ -89,6 +89,10 @@ struct MaterialPoints {
   /// keeps some points only fills every array so (points/saved_points.hpp).
   void append_saved(std::size_t array, std::string_view bytes, const std::vector<char>& keep,
                     std::size_t first);
+  /// Writes of array `array` (save()'s order) the values of the points which[0], ...,
+  /// which[count - 1], as save() writes them (no count): a writer that passes the points on a
+  /// slice at a time writes every array so (points/streamed_points.hpp).
+  void put_saved(std::size_t array, const Index* which, std::size_t count, ByteWriter& out) const;
 
   /// Bytes held per point by the arrays (capacity included), for docs/performance.md.
   double bytes_per_point() const;

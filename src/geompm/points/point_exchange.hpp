@@ -1,8 +1,8 @@
 // Material points between the processes of a distributed run (docs/architecture.md,
 // "Distributed runs"): a point belongs to the process that owns its cell. After the points are
 // convected, those that crossed into another process's cell are sent to it (one all-to-all
-// exchange of whole points, their state included); for the histories and checkpoints the points of
-// every process are gathered on process 0.
+// exchange of whole points, their state included). A checkpoint passes them to process 0 a slice
+// at a time (points/streamed_points.hpp); gather_points, which holds them all there, is for tests.
 #pragma once
 
 #include <vector>

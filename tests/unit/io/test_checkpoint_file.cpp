@@ -13,6 +13,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -169,6 +170,58 @@ TEST_F(CheckpointFile, ReadsBackWhatWasWritten) {
   std::uint64_t length = 0;
   std::memcpy(&length, bytes.data() + 12, 8);
   EXPECT_EQ(length + checkpoint_header_bytes, bytes.size());
+}
+
+TEST_F(CheckpointFile, ASectionPassedInPiecesIsTheWholeOne) {
+  // The writer a distributed run streams its points through (analysis/simulation_state.cpp):
+  // pieces of every size, some larger than its buffer, make the file write_checkpoint_file
+  // writes of the whole sections (checksum included).
+  CheckpointSections whole = sections();
+  std::string large(3'000'000, '\0');
+  for (std::size_t i = 0; i < large.size(); ++i) large[i] = static_cast<char>(i * 131 % 251);
+  whole[1].second = large;
+  write_checkpoint_file(dir_ / "whole.bin", kHash, whole);
+  CheckpointWriter writer(dir_ / "pieces.bin", kHash, 3);
+  writer.section(whole[0].first, whole[0].second);
+  writer.begin_section(whole[1].first, large.size());
+  for (std::size_t at = 0, piece = 1; at < large.size(); at += piece, piece *= 3)
+    writer.add(std::string_view(large).substr(at, piece));
+  writer.begin_section(whole[2].first, 0);
+  writer.commit();
+  EXPECT_TRUE(read_bytes(dir_ / "pieces.bin") == read_bytes(dir_ / "whole.bin"));
+  EXPECT_EQ(read_checkpoint_file(dir_ / "pieces.bin", kHash).sections, whole);
+}
+
+TEST_F(CheckpointFile, AWriterGivenTooManyOrTooFewBytesIsALogicError) {
+  {
+    CheckpointWriter writer(dir_ / "more.bin", kHash, 1);
+    writer.begin_section("points", 4);
+    EXPECT_THROW(writer.add("five!"), std::logic_error);
+  }
+  {
+    CheckpointWriter writer(dir_ / "fewer.bin", kHash, 2);
+    writer.begin_section("points", 4);
+    writer.add("abc");
+    EXPECT_THROW(writer.begin_section("model", 0), std::logic_error);
+    EXPECT_THROW(writer.commit(), std::logic_error);
+  }
+  // Never renamed: no checkpoint, the temporary left as after a crash.
+  EXPECT_FALSE(fs::exists(dir_ / "fewer.bin"));
+  EXPECT_TRUE(fs::exists(checkpoint_temporary(dir_ / "fewer.bin")));
+}
+
+TEST_F(CheckpointFile, AFileThatCannotBeWrittenIsARunError) {
+  // /dev/full: every write fails with ENOSPC, for root too (a full disk).
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  fs::create_symlink("/dev/full", checkpoint_temporary(dir_ / "checkpoint.bin"));
+  try {
+    write_checkpoint_file(dir_ / "checkpoint.bin", kHash, sections());
+    FAIL() << "written on a full disk";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write the checkpoint"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos);
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "checkpoint.bin"));
 }
 
 TEST_F(CheckpointFile, ReplacesTheLastOneAtomically) {
