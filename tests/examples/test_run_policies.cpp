@@ -303,13 +303,15 @@ output:
   EXPECT_EQ(newton.column("largest_residual_unknown").back(), 1.0);
   for (const double unknown : newton.column("largest_residual_unknown"))
     EXPECT_TRUE(unknown == 0.0 || unknown == 1.0) << "a displacement model: x or y";
-  // Where each correction moved the model most: none before an attempt's first correction, a
+  // Where each correction moved the model most: none before an attempt's first correction (its
+  // step_length 0; a step tries whole corrections, then halved ones, before it is cut back), a
   // mesh node's x or y after it.
   const auto moved_node = newton.column("largest_correction_node"),
              moved_unknown = newton.column("largest_correction_unknown"),
-             iteration = newton.column("iteration");
+             iteration = newton.column("iteration"), kept = newton.column("step_length");
   for (std::size_t k = 0; k < iteration.size(); ++k) {
-    if (iteration[k] == 0.0) {
+    if (iteration[k] == 0.0) EXPECT_EQ(kept[k], 0.0) << "row " << k;
+    if (kept[k] == 0.0) {
       EXPECT_EQ(moved_node[k], -1.0) << "row " << k;
     } else {
       EXPECT_GE(moved_node[k], 0.0) << "row " << k;

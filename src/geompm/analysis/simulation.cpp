@@ -190,10 +190,17 @@ void Simulation::run_phase() {
       stop_on_interrupt();
     inject_test_fault(processes_, "between_steps");
     const double t = control_->time(), dt = control_->trial_step();
-    const StepResult step = stepper_.advance(*phase_, t, dt);
+    StepResult step = stepper_.advance(*phase_, t, dt);
     together(processes_, [&] {
       if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
     });
+    // At the smallest allowed step, before the run stops: once more with backtracking.
+    if (!step.converged && !control_->can_cut_back(dt) && phase_->spec->newton.line_search < 0) {
+      step = stepper_.advance(*phase_, t, dt, true);
+      together(processes_, [&] {
+        if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
+      });
+    }
     if (!step.converged) {
       cut_back(step, t, dt);
       continue;

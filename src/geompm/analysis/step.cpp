@@ -262,6 +262,7 @@ NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
   };
   put_in_front(second.corrections, logged(failed.corrections), n);
   put_in_front(second.largest_correction, logged(failed.largest_correction), n, Index{-1});
+  put_in_front(second.step_lengths, logged(failed.step_lengths), n, 0.0);
   if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
     put_in_front(second.tangent_errors, failed.tangent_errors, n);
   return second;
@@ -391,7 +392,7 @@ bool writes_boundary(const spec::Model& spec) {
                      [](const spec::Phase& phase) { return !phase.surface_loads.empty(); });
 }
 
-StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
+StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt, bool last_resort) {
   StepResult result;
   Step step;
   // --- phase 1: initialise: the grid, the step's unknowns and contributions
@@ -399,21 +400,25 @@ StepResult StepSolver::advance(PhaseContext& phase, double t0, double dt) {
   result.gravity = phase.gravity(step.t1);
   result.dofs = &system_->dofs();
   // --- phase 2: Lagrangian (Newton)
-  if (!solve(phase, dt, step, result)) return result;
+  if (!solve(phase, dt, last_resort, step, result)) return result;
   result.converged = true;
   // --- phase 3: convect
   finish(phase, dt, step, result);
   return result;
 }
 
-bool StepSolver::solve(const PhaseContext& phase, double dt, Step& step, StepResult& result) {
+bool StepSolver::solve(const PhaseContext& phase, double dt, bool last_resort, Step& step,
+                       StepResult& result) {
   const DofMap& dofs = system_->dofs();
   LagrangianProblem problem(*system_, step.du, system_->find<Inertia>());
   NewtonSettings settings;
   settings.max_iterations = phase.spec->newton.max_iterations;
   settings.residual_tolerance = phase.spec->newton.residual_tolerance;
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
-  settings.max_halvings = phase.spec->newton.line_search;
+  // newton.line_search not set: whole corrections, and halved ones where the residual grew only
+  // as the last resort of a step that failed at the smallest allowed step (theory §4.4).
+  const int line_search = phase.spec->newton.line_search;
+  settings.max_halvings = line_search >= 0 ? line_search : last_resort ? fallback_halvings : 0;
   settings.energy_search = phase.spec->newton.energy_line_search;
   settings.tangent_check = phase.spec->newton.tangent_check;
   settings.increment_floor = full_step_increment(phase.spec->time_step.max);

@@ -78,7 +78,9 @@ class StepSolver {
   /// Advances the model from phase time t0 by dt. If the step converges the points are updated
   /// (and points that left the mesh handled by the model's policy: result.lost lists them; under
   /// "stop" the points are NOT updated and the caller stops the run).
-  StepResult advance(PhaseContext& phase, double t0, double dt);
+  /// `last_resort`: the step failed at the smallest allowed step; with newton.line_search not
+  /// set its corrections are now halved where the residual grows (docs/theory.md §4.4).
+  StepResult advance(PhaseContext& phase, double t0, double dt, bool last_resort = false);
 
   /// A distributed run: this process holds the points of the cells `cell_part` gives it
   /// (docs/architecture.md, "Distributed runs"); points that cross into another process's cell
@@ -115,7 +117,8 @@ class StepSolver {
   /// The increment the last converged step's rate gives over the phase's largest step (0 at a
   /// phase's first step): the scale of a cut-back step's corrections (docs/theory.md eq. 4.5).
   double full_step_increment(double max_step) const;
-  bool solve(const PhaseContext& phase, double dt, Step& step, StepResult& result);
+  bool solve(const PhaseContext& phase, double dt, bool last_resort, Step& step,
+             StepResult& result);
   void finish(PhaseContext& phase, double dt, Step& step, StepResult& result);
   bool extrapolated_start(double dt, Vector& x) const;
   void remember_increment(const Vector& du, double dt);

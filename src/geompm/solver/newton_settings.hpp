@@ -14,6 +14,11 @@ namespace geompm {
 /// that start goes on), in the quadratic regime by far more (docs/theory.md §4.5).
 inline constexpr double superlinear_contraction = 0.1;
 
+/// The halvings of a grown residual's correction when a step that failed at the smallest allowed
+/// step is tried once more (newton.line_search not set; analysis/simulation.cpp, docs/theory.md
+/// §4.4): as many as an inadmissible iterate gets.
+inline constexpr int fallback_halvings = 6;
+
 struct NewtonSettings {
   int max_iterations = 15;
   /// If > 0: after this many iterations Newton goes on (up to max_iterations) only while it

@@ -28,7 +28,11 @@ void StepController::converged(double dt, int iterations) {
 
 bool StepController::failed(double dt) {
   state_.dt = dt * settings_.cutback;
-  return state_.dt >= settings_.min * (1.0 - 1e-12);
+  return can_cut_back(dt);
+}
+
+bool StepController::can_cut_back(double dt) const {
+  return dt * settings_.cutback >= settings_.min * (1.0 - 1e-12);
 }
 
 }  // namespace geompm

@@ -47,6 +47,8 @@ class StepController {
   /// A step of `dt` did not converge: the next try is cut back. False if that would be below
   /// the smallest allowed step (the run cannot go on).
   bool failed(double dt);
+  /// Whether a step of `dt` that does not converge can be retried cut back.
+  bool can_cut_back(double dt) const;
 
   double time() const { return state_.time; }
   /// The step to try next (before trial_step() shortens it to the phase's end).

@@ -268,7 +268,10 @@ struct Newton {
   int max_iterations = 15;
   double residual_tolerance = 1e-8;      // relative to the force scale
   double displacement_tolerance = 1e-8;  // relative to the step's displacement increment
-  int line_search = 0;                   // halvings of an overshooting correction (0: none)
+  // Halvings of a correction whose residual grew (0: none); -1, the default: none in a step's
+  // first attempt, up to 6 in a second one from zero if the first does not converge
+  // (analysis/step.cpp, docs/theory.md §4.4).
+  int line_search = -1;
   // The energy line search's tolerance on dx . R relative to its start (docs/theory.md §4.4;
   // 0: off).
   double energy_line_search = 0.0;

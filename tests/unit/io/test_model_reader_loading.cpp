@@ -70,7 +70,7 @@ TEST(ModelReaderLoading, ReadsLineSearchAndMixedVolume) {
   EXPECT_EQ(model.numerics.mixed_field_pressure, true);
   EXPECT_FALSE(model.numerics.mixed_incremental_pressure);
   EXPECT_EQ(model.phases.at(1).newton.line_search, 4);
-  EXPECT_EQ(model.phases.at(0).newton.line_search, 0);
+  EXPECT_EQ(model.phases.at(0).newton.line_search, -1);  // not set: automatic
   EXPECT_DOUBLE_EQ(model.phases.at(1).newton.energy_line_search, 0.1);
   EXPECT_DOUBLE_EQ(model.phases.at(0).newton.energy_line_search, 0.0);  // off
   EXPECT_TRUE(model.phases.at(1).newton.extrapolate);

@@ -114,6 +114,16 @@ TEST(StepController, CutsBackUntilBelowTheMinimum) {
   EXPECT_EQ(control.time(), 0.0) << "failed steps do not advance the time";
 }
 
+// Whether a failed step could still be cut back: the simulation tries a step that cannot once
+// more with backtracking before it stops (docs/theory.md §4.4).
+TEST(StepController, SaysWhetherAFailedStepCanBeCutBack) {
+  const StepController control(settings(0.4, 0.1, 0.4), 1.0);
+  EXPECT_TRUE(control.can_cut_back(0.4));
+  EXPECT_TRUE(control.can_cut_back(0.2)) << "to the minimum itself";
+  EXPECT_FALSE(control.can_cut_back(0.1));
+  EXPECT_FALSE(control.can_cut_back(0.15));
+}
+
 TEST(StepController, GrowsAgainAfterACutBack) {
   StepController control(settings(0.4, 0.01, 0.4), 1.0);
   ASSERT_TRUE(control.failed(control.trial_step()));
