@@ -123,7 +123,9 @@ TEST(StreamedCheckpoint, SomeOfEachProcesssPoints) {
   for (Index p = 0; p < mine.size(); ++p)
     if (mine.id[p] % 3 != 0) which.push_back(p);
   const std::string bytes = streamed(mine, which, 4096);
-  if (world.rank() == 0) EXPECT_TRUE(bytes == saved(all.subset(kept)));
+  if (world.rank() == 0) {
+    EXPECT_TRUE(bytes == saved(all.subset(kept)));
+  }
 }
 
 TEST(StreamedCheckpoint, OneProcessWritesItsStoresOrder) {
@@ -183,13 +185,17 @@ TEST_P(SeededCheckpoint, APointsAndGaussPointsSectionIsTheSerialModels) {
   const auto serial = build_model(spec);
   const auto model = build_model(spec, world);
   const std::string points = streamed(model->points, every_index(model->points), 2048);
-  if (world.rank() == 0) EXPECT_TRUE(points == saved(serial->points));
+  if (world.rank() == 0) {
+    EXPECT_TRUE(points == saved(serial->points));
+  }
   if (!serial->fem) return;
   model->fem->keep_own(model->cell_part, world.rank());
   const std::vector<Index> own = model->fem->own_gauss_points();
   EXPECT_EQ(world.sum(static_cast<Index>(own.size())), model->fem->gauss_points().size());
   const std::string gauss = streamed(model->fem->gauss_points(), own, 64);
-  if (world.rank() == 0) EXPECT_TRUE(gauss == saved(serial->fem->gauss_points()));
+  if (world.rank() == 0) {
+    EXPECT_TRUE(gauss == saved(serial->fem->gauss_points()));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, SeededCheckpoint,

@@ -190,17 +190,18 @@ void Simulation::run_phase() {
       stop_on_interrupt();
     inject_test_fault(processes_, "between_steps");
     const double t = control_->time(), dt = control_->trial_step();
-    StepResult step = stepper_.advance(*phase_, t, dt);
-    together(processes_, [&] {
-      if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
-    });
-    // At the smallest allowed step, before the run stops: once more with backtracking.
-    if (!step.converged && !control_->can_cut_back(dt) && phase_->spec->newton.line_search < 0) {
-      step = stepper_.advance(*phase_, t, dt, true);
+    const auto advance = [&](bool last_resort) {
+      StepResult step = stepper_.advance(*phase_, t, dt, last_resort);
       together(processes_, [&] {
         if (output_) output_->newton_log(step_number_ + 1, time_ + dt, dt, step);
       });
-    }
+      return step;
+    };
+    StepResult step = advance(false);
+    // At the smallest allowed step, before the run stops: once more with backtracking.
+    if (!step.converged && !control_->can_cut_back(dt) &&
+        phase_->spec->newton.last_resort_backtracking())
+      step = advance(true);
     if (!step.converged) {
       cut_back(step, t, dt);
       continue;

@@ -16,6 +16,7 @@
 #include "geompm/physics/point_integrator.hpp"
 #include "geompm/physics/point_springs.hpp"
 #include "geompm/points/point_exchange.hpp"
+#include "geompm/solver/newton_attempts.hpp"
 
 namespace geompm {
 
@@ -229,44 +230,6 @@ struct StepSolver::Step {
 };
 
 namespace {
-// `later` with `earlier` in front, `earlier` padded with `pad` to `size` entries.
-template <typename T>
-void put_in_front(std::vector<T>& later, std::vector<T> earlier, std::size_t size, T pad = T{}) {
-  if (earlier.size() < size) earlier.resize(size, pad);
-  earlier.insert(earlier.end(), later.begin(), later.end());
-  later = std::move(earlier);
-}
-
-// A Newton solve that followed a failed one in the same step, with the failed one's iterations
-// in front: the counts include both, and the log (newton.csv) shows both in turn. The log pairs
-// residual k with corrections[k - 1] and largest_correction[k - 1] (the correction that led to
-// it) and tangent_errors[k], so
-// those are padded to the failed attempt's residuals (a zero where the second attempt starts). A
-// failed attempt that ended on an inadmissible iterate has one correction more than it logged
-// residuals after the first (the one that led there): it is dropped, so that the second attempt's
-// first row shows no correction.
-NewtonResult after_attempt(const NewtonResult& failed, NewtonResult second) {
-  const std::size_t n = failed.residuals.size();
-  second.iterations += failed.iterations;
-  second.halvings += failed.halvings;
-  second.searches += failed.searches;
-  second.linear_iterations += failed.linear_iterations;
-  second.linear_seconds += failed.linear_seconds;
-  put_in_front(second.residuals, failed.residuals, n);
-  put_in_front(second.largest, failed.largest, n);
-  put_in_front(second.active, failed.active, n);
-  // Per correction: the failed attempt's logged ones only, padded to its residuals.
-  const auto logged = [n](auto per_correction) {
-    per_correction.resize(std::min(per_correction.size(), n > 0 ? n - 1 : 0));
-    return per_correction;
-  };
-  put_in_front(second.corrections, logged(failed.corrections), n);
-  put_in_front(second.largest_correction, logged(failed.largest_correction), n, Index{-1});
-  put_in_front(second.step_lengths, logged(failed.step_lengths), n, 0.0);
-  if (!second.tangent_errors.empty() || !failed.tangent_errors.empty())
-    put_in_front(second.tangent_errors, failed.tangent_errors, n);
-  return second;
-}
 
 // The unknown's entry in last_rate_: dim displacements, then the pressure, per mesh node.
 std::size_t rate_index(const UnknownAt& at, int dim) {
@@ -417,8 +380,11 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, bool last_resort, S
   settings.displacement_tolerance = phase.spec->newton.displacement_tolerance;
   // newton.line_search not set: whole corrections, and halved ones where the residual grew only
   // as the last resort of a step that failed at the smallest allowed step (theory §4.4).
-  const int line_search = phase.spec->newton.line_search;
-  settings.max_halvings = line_search >= 0 ? line_search : last_resort ? fallback_halvings : 0;
+  const spec::Newton& newton = phase.spec->newton;
+  if (newton.last_resort_backtracking())
+    settings.max_halvings = last_resort ? fallback_halvings : 0;
+  else
+    settings.max_halvings = newton.line_search;
   settings.energy_search = phase.spec->newton.energy_line_search;
   settings.tangent_check = phase.spec->newton.tangent_check;
   settings.increment_floor = full_step_increment(phase.spec->time_step.max);
@@ -449,7 +415,7 @@ bool StepSolver::solve(const PhaseContext& phase, double dt, bool last_resort, S
     x.setZero();
     solver_.analyse(tangent, hints);
     NewtonResult from_zero = solve_newton(problem, solver_, settings, x, tangent);
-    result.newton = after_attempt(result.newton, std::move(from_zero));
+    result.newton = join_attempts(result.newton, std::move(from_zero));
   }
   for (const Index dof : result.newton.largest)
     result.largest_residual.push_back(dof >= 0 ? unknown_at(dofs, dof) : UnknownAt{});

@@ -4,8 +4,9 @@
 // times: a point beside a structure's edge that heaves can invert in one full Newton correction
 // though the step itself is admissible, and a halved correction costs nothing where it does not
 // happen. An iterate whose residual merely grew is halved only with `newton.line_search: n`
-// (n times): Newton's residual often grows for an iterate or two while points change between
-// elastic and plastic and then converges, and halving there can stall it.
+// (n times), or, with it not set, in the last try of a step that failed at the smallest allowed
+// step (analysis/simulation.cpp): Newton's residual often grows for an iterate or two while
+// points change between elastic and plastic and then converges, and halving there can stall it.
 #pragma once
 
 #include "geompm/core/linear_algebra.hpp"

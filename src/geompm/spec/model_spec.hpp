@@ -272,6 +272,7 @@ struct Newton {
   // first attempt, up to 6 in a second one from zero if the first does not converge
   // (analysis/step.cpp, docs/theory.md §4.4).
   int line_search = -1;
+  bool last_resort_backtracking() const { return line_search < 0; }
   // The energy line search's tolerance on dx . R relative to its start (docs/theory.md §4.4;
   // 0: off).
   double energy_line_search = 0.0;
